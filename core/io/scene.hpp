@@ -1,0 +1,59 @@
+#pragma once
+// A scene: everything a run needs, read from a YAML file (core/io/scene_yaml.cpp).
+// Plain data plus the container and distribution objects the file describes.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/geometry/container.hpp"
+#include "core/sampling/radius_distribution.hpp"
+
+namespace fp {
+
+/// Which front particle s0 is tried next (paper 002 uses Random).
+enum class FrontPick { Random, Fifo, ClosestToSeed };
+/// Which of the (up to two) valid candidates of a pair is kept, and whether all pairs are scanned.
+enum class CandidateChoice { First, ClosestToSeed };
+/// Order of the neighbour pairs (si, sj) tried around s0.
+enum class PairOrder { Index, NearestFirst };
+
+struct PackerOptions {
+  std::string method = "front";              ///< the advancing front (the only method of this issue)
+  FrontPick front_pick = FrontPick::ClosestToSeed;
+  CandidateChoice candidate = CandidateChoice::ClosestToSeed;
+  PairOrder pair_order = PairOrder::NearestFirst;
+  bool walls_as_bodies = true;               ///< particles may touch container walls (closes the boundary gap)
+  int radius_pool = 1;                       ///< radii drawn ahead; a radius that does not fit waits, others are tried (1 = paper)
+  double contact_tolerance = 1e-9;           ///< relative: a contact is |gap| <= tol * min(ri, rj)
+  double grid_cell_factor = 2.0;             ///< grid cell size = factor * r_max of its level
+  double hierarchical_grid_ratio = 4.0;      ///< use the hierarchical grid when r_max / r_min exceeds this
+  std::optional<std::vector<double>> seed_point;  ///< where growth starts (default: container interior point)
+};
+
+struct StopCriteria {
+  std::optional<std::uint64_t> max_particles;     ///< stop after N particles
+  std::optional<double> target_volume_fraction;   ///< stop when sum of particle volumes / container volume >= phi0
+  std::optional<double> time_limit_seconds;       ///< stop after this wall time
+  // The front running empty always stops the run.
+};
+
+struct OutputSpec {
+  std::string format;  ///< vtu | yade | lammps | csv | json
+  std::string path;    ///< relative paths are relative to the working directory
+};
+
+struct Scene {
+  std::string source_path;   ///< file the scene was read from ("" if built in code)
+  std::string source_text;   ///< its exact text, carried into the run record
+  int dimension = 3;
+  std::uint64_t seed = 1;
+  ContainerPtr<2> container2;  ///< set when dimension == 2
+  ContainerPtr<3> container3;  ///< set when dimension == 3
+  RadiusDistributionPtr radii;
+  PackerOptions packer;
+  StopCriteria stop;
+  std::vector<OutputSpec> outputs;
+};
+
+}  // namespace fp
