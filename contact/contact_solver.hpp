@@ -1,0 +1,26 @@
+#pragma once
+// The central interface of design.md: given D fixed bodies (particles or walls) and a mobile
+// particle of known shape and orientation, return the positions where the mobile particle
+// touches all of them from outside (inside for a concave wall) without overlapping them.
+// The front manager calls solvers only through this contract; the sphere solver is also
+// usable as a concrete (final) type so the sphere fast path is resolved at compile time.
+#include <span>
+
+#include "contact/body.hpp"
+
+namespace fp {
+
+template <int D>
+class ContactSolver {
+ public:
+  /// Most solutions any solver returns for one call (circle-cylinder intersections give 4).
+  static constexpr int kMaxSolutions = 4;
+  virtual ~ContactSolver() = default;
+  /// `fixed` holds exactly D bodies; writes up to kMaxSolutions placements into `out`
+  /// and returns how many. Never returns a position it has not solved for: degenerate
+  /// configurations return 0.
+  virtual int solve(std::span<const Body<D>> fixed, const Mobile<D>& mobile,
+                    std::span<Placement<D>> out) const = 0;
+};
+
+}  // namespace fp

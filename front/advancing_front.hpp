@@ -1,0 +1,372 @@
+#pragma once
+// The advancing-front packer, paper 002 Pseudocode 1 (Roselló Valera et al. 2015):
+//   F = front, S = placed set; draw r; loop: pick s0 in F; V = {s in S : d(c0, c) <= r0 + r_s + 2r};
+//   for pairs (si, sj) of V: candidates = f(s0, si, sj, G, V, r); keep one inside G that overlaps
+//   nothing in V; on success add it to S and F and draw a new r; if no pair works remove s0 from F.
+// In 2D each new disk touches s0 and ONE neighbour, so "pairs" are single neighbours.
+//
+// Shape-agnostic in structure: the manager sees bodies and a ContactSolver; `Solver` is a
+// template parameter so that the sphere/disk solver (a final class) is inlined into the loop.
+// Differences from the paper, each an option measured in experiments/front-levers/RESULTS.md:
+//  * walls are bodies (PackerOptions::walls_as_bodies): near the boundary the walls within
+//    reach of s0 join V, so particles sit tangent to the container (the paper's listed drawback);
+//    every candidate is required to lie fully inside the container, not just its centre.
+//  * which s0 (random as the paper, FIFO, or closest to the seed point: compact growth);
+//  * pair order (index, or nearest neighbours first) and which candidate to keep (the first
+//    found, or the one closest to the seed point over all pairs);
+//  * a pool of radii drawn ahead: a radius that does not fit at s0 waits while the others are
+//    tried; every drawn radius is placed except the pool's last few, so the size distribution
+//    is not distorted (no radius is ever shrunk or discarded to make it fit).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <queue>
+#include <stdexcept>
+#include <vector>
+
+#include "contact/sphere_contact_solver.hpp"
+#include "core/geometry/container.hpp"
+#include "core/geometry/neighbour_grid.hpp"
+#include "core/io/scene.hpp"
+#include "core/sampling/radius_distribution.hpp"
+#include "core/sampling/rng.hpp"
+#include "front/pack_result.hpp"
+
+namespace fp {
+
+template <int D, class Solver = SphereContactSolver<D>>
+class AdvancingFront {
+ public:
+  AdvancingFront(const Container<D>& container, const RadiusDistribution& radii, const PackerOptions& options,
+                 const StopCriteria& stop, std::uint64_t seed)
+      : container_(container), dist_(radii), opt_(options), stop_(stop), rng_(seed),
+        grid_(grid_domain(container, radii), radii.r_min(), radii.r_max(), options.grid_cell_factor,
+              options.hierarchical_grid_ratio) {
+    if (opt_.radius_pool < 1) throw std::invalid_argument("radius_pool must be >= 1");
+    seed_point_ = container.interior_point();
+    if (opt_.seed_point) {
+      if (static_cast<int>(opt_.seed_point->size()) != D) throw std::invalid_argument("seed_point has the wrong dimension");
+      for (int a = 0; a < D; ++a) seed_point_[a] = (*opt_.seed_point)[a];
+    }
+    tol_ = opt_.contact_tolerance;
+  }
+
+  PackResult<D> run(const ProgressFn& progress = {}) {
+    using clock = std::chrono::steady_clock;
+    const auto t0 = clock::now();
+    PackResult<D> res;
+    Packing<D>& P = res.packing;
+    if (stop_.max_particles) P.reserve(*stop_.max_particles);
+    const double measure = container_.measure();
+    auto elapsed = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
+
+    for (int k = 0; k < opt_.radius_pool; ++k) pool_.push_back(draw(res));
+    initialise(P, res);
+
+    std::uint64_t iter = 0;
+    double next_progress = 0.5;
+    res.stop = StopReason::FrontExhausted;
+    while (!front_empty()) {
+      if (stop_.max_particles && P.size() >= *stop_.max_particles) { res.stop = StopReason::ParticleCount; break; }
+      if (stop_.target_volume_fraction && res.solid_measure >= *stop_.target_volume_fraction * measure) {
+        res.stop = StopReason::VolumeFraction;
+        break;
+      }
+      if ((++iter & 1023) == 0 && (stop_.time_limit_seconds || progress)) {
+        const double t = elapsed();
+        if (stop_.time_limit_seconds && t >= *stop_.time_limit_seconds) { res.stop = StopReason::TimeLimit; break; }
+        if (progress && t >= next_progress) {
+          progress(P.size(), t, res.solid_measure / measure);
+          next_progress = t + 0.5;
+        }
+      }
+      const int s0 = front_top();
+      ++res.counters.front_picks;
+      if (!try_place_around(s0, P, res)) {
+        front_pop();
+        ++res.counters.front_removals;
+      }
+    }
+    res.counters.radii_unplaced = pool_.size();
+    res.seconds = elapsed();
+    res.grid_bytes = grid_.memory_bytes();
+    res.grid_levels = grid_.levels();
+    return res;
+  }
+
+ private:
+  struct FrontEntry {
+    double key;
+    int id;
+    bool operator<(const FrontEntry& o) const { return key != o.key ? key > o.key : id > o.id; }  // min-heap
+  };
+
+  static Aabb<D> grid_domain(const Container<D>& c, const RadiusDistribution& d) {
+    Aabb<D> b = c.bounds();
+    b.lo.array() -= d.r_max();
+    b.hi.array() += d.r_max();
+    return b;
+  }
+
+  double draw(PackResult<D>& res) {
+    ++res.counters.radii_drawn;
+    return dist_.sample(rng_);
+  }
+
+  // ---- the front F ----
+  bool front_empty() const {
+    return opt_.front_pick == FrontPick::ClosestToSeed ? heap_.empty() : fifo_head_ >= list_.size();
+  }
+  int front_top() {
+    switch (opt_.front_pick) {
+      case FrontPick::ClosestToSeed: return heap_.top().id;
+      case FrontPick::Fifo: return list_[fifo_head_];
+      case FrontPick::Random: {
+        // Paper 002: s0 picked at random. Swap the pick to the head so front_pop() is O(1).
+        const std::size_t n = list_.size() - fifo_head_;
+        const std::size_t k = fifo_head_ + static_cast<std::size_t>(rng_.below(n));
+        std::swap(list_[fifo_head_], list_[k]);
+        return list_[fifo_head_];
+      }
+    }
+    return -1;
+  }
+  void front_pop() {
+    if (opt_.front_pick == FrontPick::ClosestToSeed) heap_.pop();
+    else ++fifo_head_;
+    if (fifo_head_ > 4096 && fifo_head_ * 2 > list_.size()) {  // keep the list compact
+      list_.erase(list_.begin(), list_.begin() + static_cast<std::ptrdiff_t>(fifo_head_));
+      fifo_head_ = 0;
+    }
+  }
+  void front_push(int id, const Vec<D>& c) {
+    if (opt_.front_pick == FrontPick::ClosestToSeed) heap_.push({(c - seed_point_).squaredNorm(), id});
+    else list_.push_back(id);
+  }
+
+  void add_particle(Packing<D>& P, PackResult<D>& res, const Vec<D>& c, double r) {
+    const int id = P.add(c, r);
+    grid_.insert(id, c, r);
+    front_push(id, c);
+    res.solid_measure += ball_measure<D>(r);
+  }
+
+  /// Step 1 of Pseudocode 1: D mutually tangent particles at the seed point (3 in 3D, 2 in 2D).
+  /// The radii come from the pool, so they follow the requested distribution.
+  void initialise(Packing<D>& P, PackResult<D>& res) {
+    const double r1 = take_from_pool(0, res);
+    if (!container_.contains_ball(seed_point_, r1, tol_))
+      throw std::runtime_error("the container cannot hold a first particle of radius " + std::to_string(r1) +
+                               " at the seed point: container too small for the size distribution, or seed_point outside");
+    add_particle(P, res, seed_point_, r1);
+    // Second particle tangent to the first, in a random direction; give up after a few tries
+    // (a container barely larger than one particle), the front then simply starts with one.
+    for (int attempt = 0; attempt < 64; ++attempt) {
+      const double r2 = pool_[0];
+      const Vec<D> c2 = seed_point_ + (r1 + r2) * random_unit();
+      if (!container_.contains_ball(c2, r2, tol_)) continue;
+      take_from_pool(0, res);
+      add_particle(P, res, c2, r2);
+      break;
+    }
+    if constexpr (D == 3) {
+      if (P.size() < 2) return;
+      for (int attempt = 0; attempt < 64; ++attempt) {
+        const double r3 = pool_[0];
+        // On the circle of centres tangent to both: pick a random point of it.
+        const Vec3 a = P.centers[0], b = P.centers[1];
+        const double ra = P.radii[0] + r3, rb = P.radii[1] + r3;
+        const Vec3 ab = b - a;
+        const double d = ab.norm();
+        const Vec3 k = ab / d;
+        const double x = (d * d + ra * ra - rb * rb) / (2 * d);
+        const double h = std::sqrt(std::max(0.0, ra * ra - x * x));
+        Vec3 e1 = (std::abs(k.x()) < 0.6 ? Vec3::UnitX() : Vec3::UnitY()).cross(k).normalized();
+        const Vec3 e2 = k.cross(e1);
+        const double phi = 2 * kPi * rng_.uniform01();
+        const Vec3 c3 = a + x * k + h * (std::cos(phi) * e1 + std::sin(phi) * e2);
+        if (!container_.contains_ball(c3, r3, tol_)) continue;
+        take_from_pool(0, res);
+        add_particle(P, res, c3, r3);
+        break;
+      }
+    }
+  }
+
+  double take_from_pool(std::size_t k, PackResult<D>& res) {
+    const double r = pool_[k];
+    pool_.erase(pool_.begin() + static_cast<std::ptrdiff_t>(k));
+    pool_.push_back(draw(res));
+    return r;
+  }
+
+  Vec<D> random_unit() {
+    if constexpr (D == 2) {
+      const double phi = 2 * kPi * rng_.uniform01();
+      return Vec2(std::cos(phi), std::sin(phi));
+    } else {
+      const double z = 2 * rng_.uniform01() - 1, phi = 2 * kPi * rng_.uniform01();
+      const double s = std::sqrt(std::max(0.0, 1 - z * z));
+      return Vec3(s * std::cos(phi), s * std::sin(phi), z);
+    }
+  }
+
+  /// Step 2.1-2.2 for one s0: returns true if a particle was placed.
+  bool try_place_around(int s0, Packing<D>& P, PackResult<D>& res) {
+    const Vec<D> c0 = P.centers[s0];
+    const double r0 = P.radii[s0];
+    // Largest pooled radius sets V (a superset for the smaller ones).
+    const double r_big = *std::max_element(pool_.begin(), pool_.end());
+    gather_neighbours(s0, c0, r0, r_big, P, res);
+    if (pool_.size() == 1) return place_radius(0, s0, c0, r0, P, res);
+    // Try the pooled radii from the largest down: big particles first keeps small ones for gaps.
+    order_.resize(pool_.size());
+    for (std::size_t k = 0; k < pool_.size(); ++k) order_[k] = static_cast<int>(k);
+    std::sort(order_.begin(), order_.end(), [&](int a, int b) { return pool_[a] > pool_[b] || (pool_[a] == pool_[b] && a < b); });
+    for (int k : order_)
+      if (place_radius(static_cast<std::size_t>(k), s0, c0, r0, P, res)) return true;
+    return false;
+  }
+
+  /// V = particles within r0 + r_s + 2r of c0 (paper's definition), plus walls within 2r.
+  void gather_neighbours(int s0, const Vec<D>& c0, double r0, double r, const Packing<D>& P, PackResult<D>& res) {
+    nb_.clear();
+    grid_.for_each_near(c0, r0 + 2 * r, [&](int id) {
+      if (id == s0) return;
+      const Vec<D> d = P.centers[id] - c0;
+      const double reach = r0 + P.radii[id] + 2 * r;
+      const double d2 = d.squaredNorm();
+      if (d2 <= reach * reach) {
+        // gap to s0: nearest-first order, and the candidate overlap test stops earliest this way
+        nb_.push_back({std::sqrt(d2) - r0 - P.radii[id], id});
+      }
+    });
+    if (opt_.pair_order == PairOrder::NearestFirst)
+      std::sort(nb_.begin(), nb_.end(), [](const Neighbour& a, const Neighbour& b) { return a.gap < b.gap || (a.gap == b.gap && a.id < b.id); });
+    res.counters.max_neighbours = std::max<std::uint64_t>(res.counters.max_neighbours, nb_.size());
+    walls_.clear();
+    if (opt_.walls_as_bodies) {
+      container_.walls_near(c0, r0 + 2 * r, walls_);
+      res.counters.wall_bodies += walls_.size();
+    }
+    // Overlap tests scan V nearest to s0 first.
+    nb_c_.clear();
+    nb_r_.clear();
+    for (const Neighbour& n : nb_) {
+      nb_c_.push_back(P.centers[n.id]);
+      nb_r_.push_back(P.radii[n.id]);
+    }
+    // Pair enumeration: walls first (few, and they close the boundary gap), then V nearest first.
+    bodies_.clear();
+    for (const Wall<D>& w : walls_) bodies_.push_back(Body<D>::of_wall(w));
+    for (const Neighbour& n : nb_) bodies_.push_back(Body<D>::sphere(P.centers[n.id], P.radii[n.id], n.id));
+    last_blocker_ = 0;
+  }
+
+  /// Tries to place pool_[k] touching s0 and D-1 bodies of V; places it and returns true on success.
+  bool place_radius(std::size_t k, int s0, const Vec<D>& c0, double r0, Packing<D>& P, PackResult<D>& res) {
+    const double r = pool_[k];
+    const bool keep_first = opt_.candidate == CandidateChoice::First;
+    bool found = false;
+    Vec<D> best;
+    double best_d2 = 0;
+    // Every candidate lies within r0 + r of c0: a lower bound for its distance to the seed.
+    const double lower_bound_here = std::max(0.0, (c0 - seed_point_).norm() - r0 - r);
+    const double lower_bound2 = lower_bound_here * lower_bound_here;
+
+    session_.begin(Body<D>::sphere(c0, r0, s0), r, bodies_);
+    std::array<Placement<D>, ContactSolver<D>::kMaxSolutions> out;
+    const int nb = static_cast<int>(bodies_.size());
+
+    auto consider = [&](int i, int j) -> bool {  // returns true to end the scan
+      ++res.counters.solves;
+      const int m = session_.solve(i, j, std::span<Placement<D>>(out.data(), out.size()));
+      for (int q = 0; q < m; ++q) {
+        const Vec<D>& x = out[q].position;
+        ++res.counters.candidates;
+        double d2 = 0;
+        if (!keep_first) {
+          d2 = (x - seed_point_).squaredNorm();
+          if (found && d2 >= best_d2) continue;
+        }
+        if (overlaps_neighbour(x, r)) { ++res.counters.rejected_overlap; continue; }
+        if (!container_.contains_ball(x, r, tol_)) { ++res.counters.rejected_container; continue; }
+        found = true;
+        best = x;
+        best_d2 = d2;
+        if (keep_first || best_d2 <= lower_bound2) return true;
+      }
+      return false;
+    };
+
+    if constexpr (D == 2) {
+      for (int i = 0; i < nb; ++i) {
+        ++res.counters.pairs_considered;
+        if (consider(i, i)) break;
+      }
+    } else {
+      bool stop = false;
+      for (int j = 1; j < nb && !stop; ++j) {
+        const Body<D>& bj = bodies_[j];
+        for (int i = 0; i < j; ++i) {
+          const Body<D>& bi = bodies_[i];
+          ++res.counters.pairs_considered;
+          if (!bi.is_wall() && !bj.is_wall()) {
+            const double reach = bi.radius + bj.radius + 2 * r;
+            if ((bi.center - bj.center).squaredNorm() > reach * reach) { ++res.counters.pairs_pruned; continue; }
+          }
+          if (consider(i, j)) { stop = true; break; }
+        }
+      }
+    }
+    if (!found) return false;
+    take_from_pool(k, res);
+    add_particle(P, res, best, r);
+    return true;
+  }
+
+  /// Does the ball (x, r) overlap any particle of V by more than the contact tolerance?
+  /// The neighbour that blocked the previous candidate is tried first: it usually blocks the next.
+  bool overlaps_neighbour(const Vec<D>& x, double r) {
+    const int n = static_cast<int>(nb_.size());
+    auto blocks = [&](int q) {
+      const double rk = nb_r_[q];
+      const double lim = r + rk - tol_ * std::min(r, rk);
+      return (nb_c_[q] - x).squaredNorm() < lim * lim;
+    };
+    if (last_blocker_ < n && blocks(last_blocker_)) return true;
+    for (int q = 0; q < n; ++q)
+      if (q != last_blocker_ && blocks(q)) { last_blocker_ = q; return true; }
+    return false;
+  }
+
+  struct Neighbour {
+    double gap;
+    int id;
+  };
+
+  const Container<D>& container_;
+  const RadiusDistribution& dist_;
+  PackerOptions opt_;
+  StopCriteria stop_;
+  Rng rng_;
+  NeighbourGrid<D> grid_;
+  Solver solver_;
+  Vec<D> seed_point_;
+  double tol_ = 1e-9;
+
+  std::priority_queue<FrontEntry> heap_;
+  std::vector<int> list_;
+  std::size_t fifo_head_ = 0;
+  std::vector<double> pool_;
+  std::vector<int> order_;
+  std::vector<Neighbour> nb_;
+  std::vector<Wall<D>> walls_;
+  std::vector<Body<D>> bodies_;
+  std::vector<Vec<D>> nb_c_;   // V's centres and radii, contiguous for the overlap test
+  std::vector<double> nb_r_;
+  int last_blocker_ = 0;
+  typename Solver::Session session_;
+};
+
+}  // namespace fp

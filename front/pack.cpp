@@ -1,0 +1,34 @@
+#include "front/pack.hpp"
+
+#include <stdexcept>
+
+#include "front/advancing_front.hpp"
+
+namespace fp {
+
+const char* to_string(StopReason r) {
+  switch (r) {
+    case StopReason::FrontExhausted: return "front exhausted";
+    case StopReason::ParticleCount: return "particle count reached";
+    case StopReason::VolumeFraction: return "target volume fraction reached";
+    case StopReason::TimeLimit: return "time limit reached";
+  }
+  return "?";
+}
+
+template <int D>
+PackResult<D> pack(const Scene& scene, const ProgressFn& progress) {
+  if (scene.dimension != D) throw std::invalid_argument("pack<D>: scene dimension mismatch");
+  const Container<D>* container = nullptr;
+  if constexpr (D == 2) container = scene.container2.get();
+  else container = scene.container3.get();
+  if (!container || !scene.radii) throw std::invalid_argument("pack: scene has no container or no size distribution");
+  if (scene.packer.method != "front") throw std::invalid_argument("pack: unknown method '" + scene.packer.method + "'");
+  AdvancingFront<D> front(*container, *scene.radii, scene.packer, scene.stop, scene.seed);
+  return front.run(progress);
+}
+
+template PackResult<2> pack<2>(const Scene&, const ProgressFn&);
+template PackResult<3> pack<3>(const Scene&, const ProgressFn&);
+
+}  // namespace fp
