@@ -19,6 +19,7 @@
 //    is not distorted (no radius is ever shrunk or discarded to make it fit).
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <queue>
 #include <stdexcept>
@@ -215,16 +216,28 @@ class AdvancingFront {
   bool try_place_around(int s0, Packing<D>& P, PackResult<D>& res) {
     const Vec<D> c0 = P.centers[s0];
     const double r0 = P.radii[s0];
-    // Largest pooled radius sets V (a superset for the smaller ones).
-    const double r_big = *std::max_element(pool_.begin(), pool_.end());
-    gather_neighbours(s0, c0, r0, r_big, P, res);
-    if (pool_.size() == 1) return place_radius(0, s0, c0, r0, P, res);
-    // Try the pooled radii from the largest down: big particles first keeps small ones for gaps.
-    order_.resize(pool_.size());
-    for (std::size_t k = 0; k < pool_.size(); ++k) order_[k] = static_cast<int>(k);
+    if (pool_.size() == 1) {
+      gather_neighbours(s0, c0, r0, pool_[0], P, res);
+      return place_radius(0, s0, c0, r0, P, res);
+    }
+    // Pool: try the radii from the largest down (big particles first keeps small ones for the
+    // gaps). A radius at least as large as one that already failed at s0 is not tried there
+    // again: s0 stays in F only while a smaller radius fits, so re-trying the large one would
+    // repeat a failed scan. (Heuristic: new neighbours can in principle open a new position.)
+    if (failed_radius_.size() < P.size()) failed_radius_.resize(P.size(), std::numeric_limits<double>::infinity());
+    double& failed = failed_radius_[s0];
+    order_.clear();
+    for (std::size_t k = 0; k < pool_.size(); ++k)
+      if (pool_[k] < failed) order_.push_back(static_cast<int>(k));
+    if (order_.empty()) return false;
     std::sort(order_.begin(), order_.end(), [&](int a, int b) { return pool_[a] > pool_[b] || (pool_[a] == pool_[b] && a < b); });
-    for (int k : order_)
+    // The largest radius tried sets V (a superset of every smaller radius' V).
+    gather_neighbours(s0, c0, r0, pool_[order_[0]], P, res);
+    for (int k : order_) {
+      const double r = pool_[k];
       if (place_radius(static_cast<std::size_t>(k), s0, c0, r0, P, res)) return true;
+      failed = std::min(failed, r);
+    }
     return false;
   }
 
@@ -360,6 +373,7 @@ class AdvancingFront {
   std::size_t fifo_head_ = 0;
   std::vector<double> pool_;
   std::vector<int> order_;
+  std::vector<double> failed_radius_;  // per particle: smallest pooled radius that failed there
   std::vector<Neighbour> nb_;
   std::vector<Wall<D>> walls_;
   std::vector<Body<D>> bodies_;
