@@ -1,0 +1,48 @@
+#pragma once
+// Private to core/geometry: the only door to CGAL. Eigen/STL types only, so that CGAL headers
+// (10-30 s of compile each, and -frounding-math) stay in mesh_cgal.cpp and mesh_cgal_io.cpp.
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/geometry/vec.hpp"
+
+namespace fp::detail {
+
+/// Points and polygons (vertex indices) as read from a file, before any checking.
+struct PolygonSoup {
+  std::vector<Vec3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+};
+
+/// Reads an OFF, OBJ or STL (ascii or binary) file, chosen by extension. On failure returns
+/// false and sets `error` to the reason.
+bool read_polygon_soup(const std::string& path, PolygonSoup& soup, std::string& error);
+
+/// Spatial queries on a closed triangle surface: AABB tree + CGAL::Side_of_triangle_mesh,
+/// both built eagerly in the constructor, so that const queries are thread-safe.
+/// Facets with zero area are left out of the tree (they change neither parity nor distances).
+/// Needs a closed, edge- and vertex-manifold, consistently oriented surface (throws otherwise).
+class TriangleSurfaceIndex {
+ public:
+  TriangleSurfaceIndex(const std::vector<Vec3>& vertices, const std::vector<std::array<int, 3>>& triangles);
+  ~TriangleSurfaceIndex();
+  TriangleSurfaceIndex(const TriangleSurfaceIndex&) = delete;
+  TriangleSurfaceIndex& operator=(const TriangleSurfaceIndex&) = delete;
+
+  /// +1 inside, 0 on the surface, -1 outside (ray parity; independent of facet orientation).
+  int side(const Vec3& p) const;
+  /// Closest point on the surface and the facet it lies on.
+  Vec3 closest_point(const Vec3& p, int* facet) const;
+  /// Appends the ids of the facets whose distance to p is <= reach.
+  void facets_within(const Vec3& p, double reach, std::vector<int>& out) const;
+  /// True if some facet is strictly closer to p than `distance` (stops at the first found).
+  bool any_facet_closer_than(const Vec3& p, double distance) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace fp::detail

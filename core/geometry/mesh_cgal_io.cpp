@@ -1,0 +1,53 @@
+// CGAL translation unit 1 of 2: reading polygon soups from OFF / OBJ / STL files.
+// Kept apart from the spatial queries (mesh_cgal.cpp) so the two heavy TUs build in parallel.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/IO/STL.h>
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+
+#include "core/geometry/mesh_cgal.hpp"
+
+namespace fp::detail {
+
+bool read_polygon_soup(const std::string& path, PolygonSoup& soup, std::string& error) {
+  using Point = CGAL::Epick::Point_3;
+  {
+    std::ifstream probe(path, std::ios::binary);
+    if (!probe) {
+      error = "cannot open the file";
+      return false;
+    }
+  }
+  const std::size_t dot = path.find_last_of('.');
+  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  bool ok = false;
+  if (ext == "off") {
+    ok = CGAL::IO::read_OFF(path, points, polygons);
+  } else if (ext == "obj") {
+    ok = CGAL::IO::read_OBJ(path, points, polygons);
+  } else if (ext == "stl") {
+    ok = CGAL::IO::read_STL(path, points, polygons);  // binary first, then ascii; merges equal points
+  } else {
+    error = "unknown extension '." + ext + "' (supported: .off, .obj, .stl)";
+    return false;
+  }
+  if (!ok) {
+    error = "not a valid " + ext + " file";
+    return false;
+  }
+  soup.points.clear();
+  soup.points.reserve(points.size());
+  for (const Point& p : points) soup.points.emplace_back(p.x(), p.y(), p.z());
+  soup.polygons = std::move(polygons);
+  return true;
+}
+
+}  // namespace fp::detail

@@ -1,0 +1,230 @@
+// PolygonContainer against brute force: distance to every edge, winding number by angle sums.
+#include "core/geometry/polygon_container.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include "core/sampling/rng.hpp"
+#include "tests/geometry/reference_geometry.hpp"
+
+namespace fp {
+namespace {
+
+std::vector<Vec2> l_shape() {  // area 3: a 2x2 square minus the unit square at its top right
+  return {Vec2(0, 0), Vec2(2, 0), Vec2(2, 1), Vec2(1, 1), Vec2(1, 2), Vec2(0, 2)};
+}
+
+std::vector<Vec2> star(int points, double r_in, double r_out, const Vec2& c) {
+  std::vector<Vec2> v;
+  for (int k = 0; k < 2 * points; ++k) {
+    const double phi = kPi * k / points;
+    const double r = k % 2 ? r_in : r_out;
+    v.emplace_back(c.x() + r * std::cos(phi), c.y() + r * std::sin(phi));
+  }
+  return v;
+}
+
+/// A random star-shaped (hence simple) polygon, clockwise.
+std::vector<Vec2> random_star_shaped(Rng& rng, int n) {
+  std::vector<double> angles(n);
+  for (double& a : angles) a = rng.uniform(0.0, 2 * kPi);
+  std::sort(angles.begin(), angles.end(), std::greater<>());
+  std::vector<Vec2> v;
+  for (double a : angles) {
+    const double r = rng.uniform(0.2, 1.0);
+    v.emplace_back(3.0 + r * std::cos(a), -1.0 + r * std::sin(a));
+  }
+  return v;
+}
+
+double shoelace(const std::vector<Vec2>& v) {
+  double s = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) s += v[i].x() * v[(i + 1) % v.size()].y() - v[(i + 1) % v.size()].x() * v[i].y();
+  return 0.5 * s;
+}
+
+void check_against_brute_force(const std::vector<Vec2>& input, std::uint64_t seed) {
+  const PolygonContainer poly(input);
+  const Aabb<2> b = poly.bounds();
+  const Vec2 pad = 0.2 * b.size();
+  Rng rng(seed);
+  int inside = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const Vec2 p(rng.uniform(b.lo.x() - pad.x(), b.hi.x() + pad.x()), rng.uniform(b.lo.y() - pad.y(), b.hi.y() + pad.y()));
+    const double dist = testref::polygon_boundary_distance(input, p);
+    const bool in = testref::winding_by_angles(input, p) != 0;
+    if (dist > 1e-12) {
+      EXPECT_EQ(poly.inside(p), in) << "p = " << p.transpose();
+      EXPECT_NEAR(poly.signed_distance(p), in ? -dist : dist, 1e-13);
+    }
+    inside += in;
+  }
+  EXPECT_GT(inside, 200);
+  // The vertices and edge midpoints are on the (closed) boundary.
+  for (std::size_t i = 0; i < input.size(); ++i) {
+    EXPECT_TRUE(poly.inside(input[i]));
+    EXPECT_EQ(poly.signed_distance(input[i]), 0.0);
+    const Vec2 mid = 0.5 * (input[i] + input[(i + 1) % input.size()]);
+    EXPECT_TRUE(poly.inside(mid) || std::abs(poly.signed_distance(mid)) < 1e-15);
+  }
+}
+
+TEST(PolygonContainer, LShapeAgainstBruteForce) { check_against_brute_force(l_shape(), 41); }
+TEST(PolygonContainer, StarAgainstBruteForce) { check_against_brute_force(star(7, 0.4, 1.0, Vec2(-2, 5)), 42); }
+TEST(PolygonContainer, RandomPolygonsAgainstBruteForce) {
+  Rng rng(43);
+  for (int k = 0; k < 10; ++k) check_against_brute_force(random_star_shaped(rng, 5 + 4 * k), 100 + k);
+}
+
+TEST(PolygonContainer, OrientationIsNormalisedAndReflexCornersFound) {
+  std::vector<Vec2> cw = l_shape();
+  std::reverse(cw.begin(), cw.end());
+  const PolygonContainer poly(cw);
+  EXPECT_GT(shoelace(poly.vertices()), 0.0);  // stored counter-clockwise
+  int reflex = 0;
+  for (int i = 0; i < 6; ++i) reflex += poly.is_reflex(i);
+  EXPECT_EQ(reflex, 1);
+  const PolygonContainer s(star(5, 0.3, 1.0, Vec2::Zero()));
+  reflex = 0;
+  for (int i = 0; i < 10; ++i) reflex += s.is_reflex(i);
+  EXPECT_EQ(reflex, 5);
+}
+
+TEST(PolygonContainer, MeasureAgainstClosedFormAndMonteCarlo) {
+  EXPECT_NEAR(PolygonContainer(l_shape()).measure(), 3.0, 1e-14);
+  // Regular star: 2n triangles (centre, outer, inner) of area r_in r_out sin(pi/n) / 2.
+  const int n = 6;
+  const double ri = 0.45, ro = 1.3;
+  const PolygonContainer s(star(n, ri, ro, Vec2(1e3, -2e3)));  // far from the origin on purpose
+  EXPECT_NEAR(s.measure(), 2 * n * 0.5 * ri * ro * std::sin(kPi / n), 1e-10);
+
+  Rng rng(44);
+  const std::vector<Vec2> v = random_star_shaped(rng, 23);
+  const PolygonContainer p(v);
+  const Aabb<2> b = p.bounds();
+  const int N = 200000;
+  int hits = 0;
+  for (int i = 0; i < N; ++i) {
+    const Vec2 q(rng.uniform(b.lo.x(), b.hi.x()), rng.uniform(b.lo.y(), b.hi.y()));
+    hits += testref::winding_by_angles(v, q) != 0;
+  }
+  const double frac = double(hits) / N, box = b.size().prod();
+  const double sigma = box * std::sqrt(frac * (1 - frac) / N);
+  EXPECT_NEAR(p.measure(), frac * box, 4 * sigma);
+  EXPECT_NEAR(p.measure(), std::abs(shoelace(v)), 1e-13);
+}
+
+TEST(PolygonContainer, WallsNearAreExactlyTheEdgesAndReflexCornersWithinReach) {
+  Rng rng(45);
+  for (const auto& input : {l_shape(), star(7, 0.4, 1.0, Vec2(-2, 5)), random_star_shaped(rng, 30)}) {
+    const PolygonContainer poly(input);
+    const auto& v = poly.vertices();
+    const int n = static_cast<int>(v.size());
+    const Aabb<2> b = poly.bounds();
+    std::vector<Wall<2>> walls;
+    for (int i = 0; i < 2000; ++i) {
+      const Vec2 p(rng.uniform(b.lo.x() - 0.2, b.hi.x() + 0.2), rng.uniform(b.lo.y() - 0.2, b.hi.y() + 0.2));
+      const double reach = rng.uniform(0.0, 0.6);
+      walls.clear();
+      poly.walls_near(p, reach, walls);
+      std::set<int> got;
+      for (const auto& w : walls) {
+        got.insert(w.id);
+        if (w.id < n) {
+          ASSERT_EQ(w.kind, WallKind::Plane);
+          // Inward: the edge midpoint nudged along the normal is inside.
+          const Vec2 mid = 0.5 * (v[w.id] + v[(w.id + 1) % n]);
+          EXPECT_TRUE(testref::winding_by_angles(v, mid + 1e-6 * w.normal) != 0);
+          EXPECT_NEAR(w.normal.norm(), 1.0, 1e-15);
+          EXPECT_NEAR(w.normal.dot(v[(w.id + 1) % n] - v[w.id]), 0.0, 1e-14);
+        } else {
+          ASSERT_EQ(w.kind, WallKind::Vertex);
+          EXPECT_EQ(w.point, v[w.id - n]);
+        }
+      }
+      EXPECT_EQ(got.size(), walls.size());
+      for (int e = 0; e < n; ++e) {
+        const double d = testref::segment_distance<2>(p, v[e], v[(e + 1) % n]);
+        if (d <= reach * (1 - 1e-12)) { EXPECT_TRUE(got.count(e)); }
+        if (d > reach * (1 + 1e-12)) { EXPECT_FALSE(got.count(e)); }
+        // Reflex: the turn at vertex e is clockwise in the counter-clockwise polygon.
+        const Vec2 a = v[(e + n - 1) % n] - v[e], c = v[(e + 1) % n] - v[e];
+        const bool reflex = a.x() * c.y() - a.y() * c.x() > 0;
+        const double dv = (p - v[e]).norm();
+        if (reflex && dv <= reach * (1 - 1e-12)) { EXPECT_TRUE(got.count(n + e)); }
+        if (!reflex || dv > reach * (1 + 1e-12)) { EXPECT_FALSE(got.count(n + e)); }
+      }
+    }
+  }
+}
+
+TEST(PolygonContainer, WallGapsAgreeWithSignedDistance) {
+  const PolygonContainer poly(star(7, 0.4, 1.0, Vec2(-2, 5)));
+  const int n = 14;
+  Rng rng(46);
+  std::vector<Wall<2>> walls;
+  int single_edge = 0, corner = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Vec2 c(rng.uniform(-3, -1), rng.uniform(4, 6));
+    const double sd = poly.signed_distance(c);
+    if (sd >= 0) continue;
+    const double r = rng.uniform(0.0, -sd);
+    walls.clear();
+    poly.walls_near(c, -sd * (1 + 1e-9), walls);
+    if (walls.size() == 1) {  // near a single edge: its line gives the clearance
+      EXPECT_NEAR(walls[0].gap(c, r), -sd - r, 1e-13);
+      ++single_edge;
+    }
+    for (const auto& w : walls)
+      if (w.kind == WallKind::Vertex && std::abs((c - w.point).norm() + sd) < 1e-12) {
+        EXPECT_NEAR(w.gap(c, r), -sd - r, 1e-13);  // nearest feature is the reflex corner itself
+        ++corner;
+      }
+    for (const auto& w : walls)
+      if (w.kind == WallKind::Vertex) { EXPECT_GE(w.id, n); }
+  }
+  EXPECT_GT(single_edge, 1000);
+  EXPECT_GT(corner, 50);
+}
+
+TEST(PolygonContainer, InteriorPointIsDeep) {
+  const PolygonContainer square({Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)});
+  EXPECT_NEAR(square.signed_distance(square.interior_point()), -0.5, 2e-4);
+  const PolygonContainer l(l_shape());
+  // Against the deepest point of a dense grid.
+  double best = 0;
+  for (int i = 0; i <= 400; ++i)
+    for (int j = 0; j <= 400; ++j) best = std::max(best, -l.signed_distance(Vec2(2.0 * i / 400, 2.0 * j / 400)));
+  EXPECT_TRUE(l.inside(l.interior_point()));
+  EXPECT_GE(-l.signed_distance(l.interior_point()), best - 2e-4);
+}
+
+TEST(PolygonContainer, DescribeSaysWhatItIs) {
+  EXPECT_EQ(PolygonContainer(l_shape()).describe(), "polygon (6 vertices, area 3)");
+}
+
+TEST(PolygonContainer, ImpossiblePolygonsAreRefused) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  testref::expect_invalid([] { PolygonContainer({Vec2(0, 0), Vec2(1, 0)}); }, {"vertices", "at least 3"});
+  testref::expect_invalid([] { PolygonContainer({Vec2(0, 0), Vec2(1, 0), Vec2(2, 0)}); }, {"vertices", "zero area"});
+  testref::expect_invalid([] { PolygonContainer({Vec2(0, 0), Vec2(1, 0), Vec2(1, 0), Vec2(0, 1)}); },
+                          {"vertices", "same point"});
+  testref::expect_invalid([] { PolygonContainer({Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 0), Vec2(-1, 1)}); },
+                          {"same point"});
+  testref::expect_invalid([] { PolygonContainer({Vec2(0, 0), Vec2(2, 2), Vec2(2, 0), Vec2(0, 1)}); },  // bow-tie
+                          {"vertices", "intersect"});
+  testref::expect_invalid([] { PolygonContainer({Vec2(0, 0), Vec2(1, 1), Vec2(1, 0), Vec2(0, 1)}); },  // zero area
+                          {"vertices", "intersect"});
+  testref::expect_invalid([] { PolygonContainer({Vec2(0, 0), Vec2(2, 0), Vec2(1, 0), Vec2(1, 1)}); },  // spike
+                          {"vertices", "self-intersecting"});
+  testref::expect_invalid([] { PolygonContainer({Vec2(0, 0), Vec2(4, 0), Vec2(4, 4), Vec2(2, 0.0), Vec2(0, 4)}); },
+                          {"intersect"});  // a vertex touching another edge
+  testref::expect_invalid([&] { PolygonContainer({Vec2(0, 0), Vec2(1, nan), Vec2(0, 1)}); }, {"vertex 1", "finite"});
+}
+
+}  // namespace
+}  // namespace fp
