@@ -1,0 +1,22 @@
+#pragma once
+// Readers for the files packing_writers.hpp writes: YADE text, CSV, LAMMPS data file
+// (diameter column -> radius), frontpack's own VTU layout (appended raw binary) and the json
+// output (record + particles). Errors are std::runtime_error naming the file (and the line
+// for text formats).
+#include <string>
+
+#include "core/geometry/packing.hpp"
+#include "core/io/output_format.hpp"
+
+namespace fp {
+
+/// Reads a D-dimensional packing. A 2D read requires every z to be 0 (and the CSV header of
+/// the right dimension). Particles come back in id order.
+template <int D>
+Packing<D> read_packing(OutputFormat format, const std::string& path);
+
+/// 2 or 3: from the CSV header or the JSON "dimension"; for the other formats 2 iff every
+/// z is exactly 0. Throws like read_packing.
+int packing_file_dimension(OutputFormat format, const std::string& path);
+
+}  // namespace fp

@@ -1,0 +1,247 @@
+#include "core/io/packing_writers.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <ostream>
+#include <stdexcept>
+#include <vector>
+
+#include "core/io/atomic_file.hpp"
+
+namespace fp {
+namespace {
+
+// Builds text in memory in blocks and hands them to the stream: one virtual call per block
+// instead of per number.
+class TextBuffer {
+ public:
+  explicit TextBuffer(std::ostream& out) : out_(out) { buf_.reserve(kBlock + 256); }
+  ~TextBuffer() = default;
+
+  TextBuffer& number(double v) {
+    char tmp[32];
+    const auto res = std::to_chars(tmp, tmp + sizeof tmp, v);  // shortest round-trip form
+    buf_.append(tmp, res.ptr);
+    return *this;
+  }
+  TextBuffer& integer(std::uint64_t v) {
+    char tmp[24];
+    const auto res = std::to_chars(tmp, tmp + sizeof tmp, v);
+    buf_.append(tmp, res.ptr);
+    return *this;
+  }
+  TextBuffer& text(const std::string& s) {
+    buf_ += s;
+    return *this;
+  }
+  TextBuffer& ch(char c) {
+    buf_ += c;
+    if (c == '\n' && buf_.size() >= kBlock) flush();
+    return *this;
+  }
+  void flush() {
+    out_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
+    buf_.clear();
+  }
+
+ private:
+  static constexpr std::size_t kBlock = 1 << 16;
+  std::ostream& out_;
+  std::string buf_;
+};
+
+template <int D>
+double coord(const Packing<D>& p, std::size_t i, int k) {
+  return k < D ? p.centers[i][k] : 0.0;
+}
+
+template <int D>
+void write_yade(std::ostream& out, const Packing<D>& p) {
+  TextBuffer b(out);
+  b.text("#format x_y_z_r").ch('\n');
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    b.number(coord(p, i, 0)).ch(' ').number(coord(p, i, 1)).ch(' ').number(coord(p, i, 2)).ch(' ');
+    b.number(p.radii[i]).ch('\n');
+  }
+  b.flush();
+}
+
+template <int D>
+void write_csv(std::ostream& out, const Packing<D>& p) {
+  TextBuffer b(out);
+  b.text(D == 3 ? "id,x,y,z,r" : "id,x,y,r").ch('\n');
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    b.integer(i);
+    for (int k = 0; k < D; ++k) b.ch(',').number(p.centers[i][k]);
+    b.ch(',').number(p.radii[i]).ch('\n');
+  }
+  b.flush();
+}
+
+template <int D>
+void write_lammps(std::ostream& out, const Packing<D>& p, const RunRecord& rec) {
+  // Box: the container bounds, grown if needed so that every centre is inside (LAMMPS drops
+  // atoms outside the box); without bounds, the particles' bounding box grown by their radii.
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = -lo;
+  double r_max = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double r = p.radii[i];
+    r_max = std::max(r_max, r);
+    for (int k = 0; k < D; ++k) {
+      const double c = p.centers[i][k];
+      lo[k] = std::min(lo[k], rec.bounds ? c : c - r);
+      hi[k] = std::max(hi[k], rec.bounds ? c : c + r);
+    }
+  }
+  if (rec.bounds) {
+    lo = lo.cwiseMin(rec.bounds->lo);
+    hi = hi.cwiseMax(rec.bounds->hi);
+  }
+  for (int k = 0; k < 3; ++k) {
+    if (!(lo[k] < hi[k])) {  // empty packing or a flat axis: LAMMPS needs lo < hi
+      const double mid = std::isfinite(lo[k]) && std::isfinite(hi[k]) ? 0.5 * (lo[k] + hi[k]) : 0.0;
+      const double half = r_max > 0 ? r_max : 0.5;
+      lo[k] = mid - half;
+      hi[k] = mid + half;
+    }
+  }
+  if constexpr (D == 2) {
+    // LAMMPS 2D wants the atoms at z = 0 strictly inside a thin z slab.
+    const double half = r_max > 0 ? r_max : 0.5;
+    lo[2] = -half;
+    hi[2] = half;
+  }
+
+  TextBuffer b(out);
+  b.text("LAMMPS data file (atom_style sphere) written by frontpack ").text(rec.version).text(", ");
+  b.text(D == 2 ? "2D (use 'dimension 2')" : "3D").text(", columns: id type diameter density x y z").ch('\n');
+  b.ch('\n');
+  b.integer(p.size()).text(" atoms").ch('\n');
+  b.text("1 atom types").ch('\n');
+  b.ch('\n');
+  const char* axis[] = {"x", "y", "z"};
+  for (int k = 0; k < 3; ++k) {
+    b.number(lo[k]).ch(' ').number(hi[k]).ch(' ').text(axis[k]).text("lo ").text(axis[k]).text("hi").ch('\n');
+  }
+  b.ch('\n');
+  b.text("Atoms # sphere").ch('\n');
+  b.ch('\n');
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    b.integer(i + 1).text(" 1 ").number(2.0 * p.radii[i]).ch(' ').number(rec.density);
+    for (int k = 0; k < 3; ++k) b.ch(' ').number(coord(p, i, k));
+    b.ch('\n');
+  }
+  b.flush();
+}
+
+// VTU: one VTK_VERTEX cell per particle, data appended as raw binary (exact doubles, ~57
+// bytes per particle). Each appended block is a UInt64 byte count followed by the bytes.
+template <typename T>
+void write_raw(std::ostream& out, const T* data, std::size_t count) {
+  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(count * sizeof(T)));
+}
+
+template <typename T, typename Fill>
+void write_block(std::ostream& out, std::size_t count, Fill fill) {
+  const std::uint64_t bytes = count * sizeof(T);
+  write_raw(out, &bytes, 1);
+  std::vector<T> chunk;
+  constexpr std::size_t kChunk = 1 << 14;
+  chunk.reserve(kChunk);
+  for (std::size_t i = 0; i < count; ++i) {
+    chunk.push_back(fill(i));
+    if (chunk.size() == kChunk) {
+      write_raw(out, chunk.data(), chunk.size());
+      chunk.clear();
+    }
+  }
+  write_raw(out, chunk.data(), chunk.size());
+}
+
+template <int D>
+void write_vtu(std::ostream& out, const Packing<D>& p) {
+  const std::uint64_t n = p.size();
+  const std::uint64_t head = sizeof(std::uint64_t);
+  const std::uint64_t off_radius = 0;
+  const std::uint64_t off_id = off_radius + head + 8 * n;
+  const std::uint64_t off_points = off_id + head + 8 * n;
+  const std::uint64_t off_conn = off_points + head + 24 * n;
+  const std::uint64_t off_offsets = off_conn + head + 8 * n;
+  const std::uint64_t off_types = off_offsets + head + 8 * n;
+  const std::string ns = std::to_string(n);
+  auto array = [](const char* type, const char* name, int comps, std::uint64_t offset) {
+    std::string s = std::string("        <DataArray type=\"") + type + "\" Name=\"" + name + "\"";
+    if (comps > 1) s += " NumberOfComponents=\"" + std::to_string(comps) + "\"";
+    return s + " format=\"appended\" offset=\"" + std::to_string(offset) + "\"/>\n";
+  };
+  std::string h;
+  h += "<?xml version=\"1.0\"?>\n";
+  h += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"";
+  h += std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
+  h += "\" header_type=\"UInt64\">\n";
+  h += "  <UnstructuredGrid>\n";
+  h += "    <Piece NumberOfPoints=\"" + ns + "\" NumberOfCells=\"" + ns + "\">\n";
+  h += "      <PointData Scalars=\"radius\">\n";
+  h += array("Float64", "radius", 1, off_radius);
+  h += array("Int64", "id", 1, off_id);
+  h += "      </PointData>\n";
+  h += "      <Points>\n";
+  h += array("Float64", "Points", 3, off_points);
+  h += "      </Points>\n";
+  h += "      <Cells>\n";
+  h += array("Int64", "connectivity", 1, off_conn);
+  h += array("Int64", "offsets", 1, off_offsets);
+  h += array("UInt8", "types", 1, off_types);
+  h += "      </Cells>\n";
+  h += "    </Piece>\n";
+  h += "  </UnstructuredGrid>\n";
+  h += "  <AppendedData encoding=\"raw\">\n   _";
+  out.write(h.data(), static_cast<std::streamsize>(h.size()));
+
+  write_block<double>(out, n, [&](std::size_t i) { return p.radii[i]; });
+  write_block<std::int64_t>(out, n, [](std::size_t i) { return static_cast<std::int64_t>(i); });
+  write_block<double>(out, 3 * n, [&](std::size_t j) { return coord(p, j / 3, static_cast<int>(j % 3)); });
+  write_block<std::int64_t>(out, n, [](std::size_t i) { return static_cast<std::int64_t>(i); });
+  write_block<std::int64_t>(out, n, [](std::size_t i) { return static_cast<std::int64_t>(i + 1); });
+  write_block<std::uint8_t>(out, n, [](std::size_t) { return std::uint8_t{1}; });  // VTK_VERTEX
+  const std::string tail = "\n  </AppendedData>\n</VTKFile>\n";
+  out.write(tail.data(), static_cast<std::streamsize>(tail.size()));
+}
+
+template <int D>
+void write_json(std::ostream& out, const Packing<D>& p, const RunRecord& rec) {
+  RunRecord with_particles = rec;
+  with_particles.embed_particles = true;
+  with_particles.n = p.size();
+  const std::string text = run_record_json(with_particles, p);
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+}
+
+}  // namespace
+
+template <int D>
+void write_packing(OutputFormat format, const std::string& path, const Packing<D>& packing, const RunRecord& record) {
+  if (packing.centers.size() != packing.radii.size())
+    throw std::runtime_error("cannot write '" + path + "': packing has " + std::to_string(packing.centers.size()) +
+                             " centres but " + std::to_string(packing.radii.size()) + " radii");
+  AtomicFile file(path);
+  std::ostream& out = file.stream();
+  switch (format) {
+    case OutputFormat::Vtu: write_vtu(out, packing); break;
+    case OutputFormat::Yade: write_yade(out, packing); break;
+    case OutputFormat::Lammps: write_lammps(out, packing, record); break;
+    case OutputFormat::Csv: write_csv(out, packing); break;
+    case OutputFormat::Json: write_json(out, packing, record); break;
+  }
+  file.commit();
+}
+
+template void write_packing<2>(OutputFormat, const std::string&, const Packing<2>&, const RunRecord&);
+template void write_packing<3>(OutputFormat, const std::string&, const Packing<3>&, const RunRecord&);
+
+}  // namespace fp

@@ -1,0 +1,62 @@
+#pragma once
+// The JSON run record: what was run (scene text, seed, version) and what came out (counts,
+// timings, metrics). Only run_record.cpp includes nlohmann_json.
+//
+// Layout (keys always present, in this order, so identical input gives identical bytes):
+//   frontpack_version, dimension, seed, n, scene {path, text}, container, distribution,
+//   bounds ({lo:[x,y,z], hi:[x,y,z]} or null), density, timings {name: seconds},
+//   metrics {name: value}, counters {name: integer}, info {name: string},
+//   and, when embedded, particles {x:[...], y:[...], (z:[...] in 3D), r:[...]}.
+// Doubles are printed in the shortest form that reads back to the same double; NaN and
+// infinities become null (JSON has no spelling for them).
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/geometry/packing.hpp"
+#include "core/geometry/vec.hpp"
+
+namespace fp {
+
+struct RunRecord {
+  std::string version;
+  std::string scene_path;
+  std::string scene_text;
+  std::uint64_t seed = 1;
+  int dimension = 3;
+  std::uint64_t n = 0;
+  std::string container_description;
+  std::string distribution_description;
+  std::optional<Aabb<3>> bounds;  ///< container bounds (2D: z = 0); also the LAMMPS box
+  double density = 1.0;           ///< particle density for the LAMMPS data file
+  std::vector<std::pair<std::string, double>> timings;  ///< seconds
+  std::vector<std::pair<std::string, double>> metrics;
+  std::vector<std::pair<std::string, std::uint64_t>> counters;
+  std::vector<std::pair<std::string, std::string>> info;
+  /// Embed the particles when a packing is passed to run_record_json. write_packing(Json)
+  /// always embeds them (that is what the json output format is).
+  bool embed_particles = false;
+};
+
+/// The record alone (no particles), pretty-printed, ending with a newline.
+std::string run_record_json(const RunRecord& record);
+
+/// The record, plus the particles of `packing` if record.embed_particles.
+template <int D>
+std::string run_record_json(const RunRecord& record, const Packing<D>& packing);
+
+/// Writes run_record_json(record) atomically to `path` (see atomic_file.hpp).
+void write_run_record(const std::string& path, const RunRecord& record);
+
+/// Reads the particles embedded in a json output. Throws std::runtime_error naming
+/// `source_name` (and line/column for syntax errors) if the text is not such a file or its
+/// dimension is not D.
+template <int D>
+Packing<D> packing_from_json(const std::string& text, const std::string& source_name);
+
+/// The "dimension" of a run record or json output. Throws like packing_from_json.
+int run_record_dimension(const std::string& text, const std::string& source_name);
+
+}  // namespace fp

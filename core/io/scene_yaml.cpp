@@ -1,0 +1,635 @@
+#include "core/io/scene_yaml.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "core/geometry/ball_container.hpp"
+#include "core/geometry/box_container.hpp"
+#include "core/geometry/cylinder_container.hpp"
+#include "core/geometry/mesh_container.hpp"
+#include "core/geometry/polygon_container.hpp"
+#include "core/io/output_format.hpp"
+#include "core/sampling/constant_radius.hpp"
+#include "core/sampling/discrete_radius.hpp"
+#include "core/sampling/gradation_radius.hpp"
+#include "core/sampling/histogram_radius.hpp"
+#include "core/sampling/lognormal_radius.hpp"
+#include "core/sampling/truncated_normal_radius.hpp"
+#include "core/sampling/uniform_radius.hpp"
+
+namespace fp {
+namespace {
+
+using Keys = std::vector<std::string>;
+
+std::string join(const Keys& keys) {
+  std::string s;
+  for (const auto& k : keys) s += (s.empty() ? "" : ", ") + k;
+  return s;
+}
+
+// Edit distance, for "did you mean" hints on misspelt keys and values.
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (same ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string suggestion(const std::string& word, const Keys& allowed) {
+  std::size_t best = std::numeric_limits<std::size_t>::max();
+  std::string best_word;
+  for (const auto& a : allowed) {
+    const std::size_t d = edit_distance(word, a);
+    if (d < best) {
+      best = d;
+      best_word = a;
+    }
+  }
+  return best <= std::max<std::size_t>(1, std::min<std::size_t>(3, word.size() / 3)) ? " (did you mean '" + best_word + "'?)" : "";
+}
+
+bool contains(const Keys& keys, const std::string& k) { return std::find(keys.begin(), keys.end(), k) != keys.end(); }
+
+std::string shown(const YAML::Node& n) {
+  if (!n.IsDefined() || n.IsNull()) return "nothing";
+  if (n.IsScalar()) return n.Tag() == "!" ? "the string \"" + n.Scalar() + "\"" : "'" + n.Scalar() + "'";
+  if (n.IsSequence()) return "a list";
+  return "a mapping";
+}
+
+struct Context {
+  std::string file;
+  std::filesystem::path folder;  // of the scene file: relative mesh paths start here
+
+  [[noreturn]] void fail(const YAML::Mark& m, const std::string& key, const std::string& message) const {
+    const bool known = !m.is_null() && m.line >= 0;
+    throw SceneError(file, known ? m.line + 1 : 0, known ? m.column + 1 : 0, key, message);
+  }
+};
+
+class Map;
+
+// One value of the document with its dotted path and a position to report.
+class Value {
+ public:
+  Value(const Context& ctx, YAML::Node node, std::string path, YAML::Mark mark)
+      : ctx_(&ctx), node_(std::move(node)), path_(std::move(path)), mark_(mark) {}
+
+  const std::string& path() const { return path_; }
+  const YAML::Mark& mark() const { return mark_; }
+  const YAML::Node& node() const { return node_; }
+  [[noreturn]] void fail(const std::string& message) const { ctx_->fail(mark_, path_, message); }
+
+  double number() const {
+    if (!node_.IsScalar() || node_.Tag() == "!") fail("expected a number, got " + shown(node_));
+    std::string_view s = node_.Scalar();
+    if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+    double v = 0;
+    const auto res = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (s.empty() || res.ec != std::errc() || res.ptr != s.data() + s.size()) {
+      if (res.ec == std::errc::result_out_of_range) fail("number out of range (got " + node_.Scalar() + ")");
+      fail("expected a number, got " + shown(node_));
+    }
+    if (!std::isfinite(v)) fail("must be a finite number (got " + node_.Scalar() + ")");
+    return v;
+  }
+  double positive() const {
+    const double v = number();
+    if (!(v > 0)) fail("must be positive (got " + node_.Scalar() + ")");
+    return v;
+  }
+  /// Non-negative integer. With `float_notation`, "1e6" or "1000.0" are accepted when exact.
+  std::uint64_t unsigned_integer(bool float_notation = false) const {
+    if (!node_.IsScalar() || node_.Tag() == "!") fail("expected a non-negative integer, got " + shown(node_));
+    std::string_view s = node_.Scalar();
+    if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+    std::uint64_t v = 0;
+    const auto res = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (!s.empty() && res.ec == std::errc() && res.ptr == s.data() + s.size()) return v;
+    if (res.ec == std::errc::result_out_of_range) fail("integer out of range 0 .. 2^64-1 (got " + node_.Scalar() + ")");
+    if (float_notation) {
+      const double d = number();
+      if (d >= 0 && d < 0x1.0p53 && d == std::floor(d)) return static_cast<std::uint64_t>(d);
+    }
+    fail("expected a non-negative integer, got " + shown(node_));
+  }
+  bool boolean() const {
+    bool b = false;
+    if (!node_.IsScalar() || !YAML::convert<bool>::decode(node_, b)) fail("expected true or false, got " + shown(node_));
+    return b;
+  }
+  std::string string() const {
+    if (!node_.IsScalar()) fail("expected a string, got " + shown(node_));
+    return node_.Scalar();
+  }
+  /// One of `allowed`.
+  std::string choice(const Keys& allowed) const {
+    if (!node_.IsScalar()) fail("expected one of " + join(allowed) + ", got " + shown(node_));
+    const std::string s = node_.Scalar();
+    if (!contains(allowed, s)) fail("unknown value '" + s + "'" + suggestion(s, allowed) + "; allowed: " + join(allowed));
+    return s;
+  }
+  std::vector<Value> list() const {
+    if (!node_.IsSequence()) fail("expected a list, got " + shown(node_));
+    std::vector<Value> out;
+    std::size_t i = 0;
+    for (const auto& item : node_) {
+      const YAML::Mark m = item.Mark().is_null() ? mark_ : item.Mark();
+      out.emplace_back(*ctx_, item, path_ + "[" + std::to_string(i++) + "]", m);
+    }
+    return out;
+  }
+  std::vector<double> numbers(std::optional<std::size_t> count = std::nullopt) const {
+    const auto items = list();
+    if (count && items.size() != *count)
+      fail("expected " + std::to_string(*count) + " numbers, got " + std::to_string(items.size()));
+    std::vector<double> out;
+    for (const auto& v : items) out.push_back(v.number());
+    return out;
+  }
+  template <int D>
+  Vec<D> vec(const std::string& what_dimension) const {
+    const auto items = list();
+    if (items.size() != static_cast<std::size_t>(D))
+      fail("must have " + std::to_string(D) + " components (" + what_dimension + "), got " + std::to_string(items.size()));
+    Vec<D> v;
+    for (int k = 0; k < D; ++k) v[k] = items[static_cast<std::size_t>(k)].number();
+    return v;
+  }
+  /// [[a, b], ...] as pairs.
+  std::vector<std::pair<double, double>> pairs(const std::string& shape) const {
+    std::vector<std::pair<double, double>> out;
+    for (const auto& item : list()) {
+      if (!item.node().IsSequence() || item.node().size() != 2) item.fail("expected a pair " + shape + ", got " + shown(item.node()));
+      const auto ab = item.list();
+      out.emplace_back(ab[0].number(), ab[1].number());
+    }
+    return out;
+  }
+  Map map() const;
+
+ private:
+  const Context* ctx_;
+  YAML::Node node_;
+  std::string path_;
+  YAML::Mark mark_;
+};
+
+// A mapping of the document: checks its keys (unknown, duplicate, not used) and hands out
+// values with their paths.
+class Map {
+ public:
+  Map(const Context& ctx, const YAML::Node& node, std::string path, YAML::Mark mark)
+      : ctx_(&ctx), path_(std::move(path)), mark_(mark) {
+    if (!node.IsMap()) ctx.fail(mark_, path_, "expected a mapping (key: value lines), got " + shown(node));
+    for (const auto& kv : node) {  // kv is a temporary pair of node handles: copy them
+      const YAML::Node key = kv.first;
+      const YAML::Mark key_mark = key.Mark();
+      if (!key.IsScalar()) ctx.fail(key_mark, path_, "keys must be plain names");
+      const std::string name = key.Scalar();
+      for (const auto& e : entries_)
+        if (e.name == name)
+          ctx.fail(key_mark, child_path(name),
+                   "duplicate key (first given on line " + std::to_string(e.key_mark.line + 1) + ")");
+      // A null value's mark points past the key; report such values at their key.
+      const YAML::Node value = kv.second;
+      const YAML::Mark value_mark = value.IsNull() || value.Mark().is_null() ? key_mark : value.Mark();
+      entries_.push_back({name, key_mark, Value(ctx, value, child_path(name), value_mark)});
+    }
+  }
+
+  const std::string& path() const { return path_; }
+  const YAML::Mark& mark() const { return mark_; }
+
+  /// Every key must be in `allowed`.
+  void check_known(const Keys& allowed) const {
+    for (const auto& e : entries_)
+      if (!contains(allowed, e.name))
+        ctx_->fail(e.key_mark, child_path(e.name),
+                   "unknown key" + suggestion(e.name, allowed) + "; allowed keys " +
+                       (path_.empty() ? "at the top level" : "in '" + path_ + "'") + ": " + join(allowed));
+  }
+  /// Every key must be in `used` (keys known in general but not used by this kind).
+  void check_used(const Keys& used, const std::string& by_what) const {
+    for (const auto& e : entries_)
+      if (!contains(used, e.name))
+        ctx_->fail(e.key_mark, child_path(e.name), "not used by " + by_what + " (its keys: " + join(used) + ")");
+  }
+
+  bool has(const std::string& key) const { return find(key).has_value(); }
+  std::optional<Value> find(const std::string& key) const {
+    for (const auto& e : entries_)
+      if (e.name == key) return e.value;
+    return std::nullopt;
+  }
+  Value get(const std::string& key, const std::string& hint = "") const {
+    if (auto v = find(key)) return *v;
+    ctx_->fail(mark_, child_path(key), "missing required key" + (hint.empty() ? "" : " (" + hint + ")"));
+  }
+  [[noreturn]] void fail(const std::string& message) const { ctx_->fail(mark_, path_, message); }
+
+ private:
+  std::string child_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+  struct Entry {
+    std::string name;
+    YAML::Mark key_mark;
+    Value value;
+  };
+  const Context* ctx_;
+  std::string path_;
+  YAML::Mark mark_;
+  std::vector<Entry> entries_;
+};
+
+Map Value::map() const { return Map(*ctx_, node_, path_, mark_); }
+
+// Runs a constructor; its std::invalid_argument (or any std::exception) becomes a SceneError
+// at `where`.
+template <typename F>
+auto construct(const Map& where, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const SceneError&) {
+    throw;
+  } catch (const std::exception& e) {
+    where.fail(e.what());
+  }
+}
+
+std::string dim_text(int d) { return std::to_string(d) + "D, from 'dimension'"; }
+
+// --- containers ------------------------------------------------------------------------
+
+const Keys kContainerKeys = {"type", "min", "max", "center", "radius", "base", "axis", "height", "vertices", "file", "scale"};
+const Keys kContainerTypes3 = {"box", "sphere", "cylinder", "mesh"};
+const Keys kContainerTypes2 = {"rectangle", "disk", "polygon"};
+
+Keys container_keys(const std::string& type) {
+  if (type == "box" || type == "rectangle") return {"type", "min", "max"};
+  if (type == "sphere" || type == "disk") return {"type", "center", "radius"};
+  if (type == "cylinder") return {"type", "base", "axis", "radius", "height"};
+  if (type == "polygon") return {"type", "vertices"};
+  return {"type", "file", "scale"};  // mesh
+}
+
+template <int D>
+ContainerPtr<D> parse_box(const Map& m) {
+  const Vec<D> lo = m.get("min").vec<D>(dim_text(D));
+  const Value max = m.get("max");
+  const Vec<D> hi = max.vec<D>(dim_text(D));
+  const char* axis = "xyz";
+  for (int k = 0; k < D; ++k)
+    if (!(lo[k] < hi[k]))
+      max.fail(std::string("must be greater than container.min on every axis; on ") + axis[k] + " min is " +
+               std::to_string(lo[k]) + " and max is " + std::to_string(hi[k]));
+  return construct(m, [&] { return std::make_shared<const BoxContainer<D>>(lo, hi); });
+}
+
+template <int D>
+ContainerPtr<D> parse_ball(const Map& m) {
+  const Vec<D> c = m.get("center").vec<D>(dim_text(D));
+  const double r = m.get("radius").positive();
+  return construct(m, [&] { return std::make_shared<const BallContainer<D>>(c, r); });
+}
+
+ContainerPtr<3> parse_cylinder(const Map& m) {
+  const Vec3 base = m.get("base", "centre of the bottom cap").vec<3>(dim_text(3));
+  Vec3 axis(0, 0, 1);
+  if (auto a = m.find("axis")) {
+    axis = a->vec<3>(dim_text(3));
+    if (axis.norm() == 0.0) a->fail("must be a non-zero vector");
+  }
+  const double r = m.get("radius").positive();
+  const double h = m.get("height").positive();
+  return construct(m, [&] { return std::make_shared<const CylinderContainer>(base, axis, r, h); });
+}
+
+ContainerPtr<2> parse_polygon(const Map& m) {
+  const Value v = m.get("vertices", "[[x, y], ...] in order around the polygon");
+  std::vector<Vec2> vertices;
+  for (const auto& item : v.list()) vertices.push_back(item.vec<2>("a 2D point"));
+  if (vertices.size() < 3) v.fail("a polygon needs at least 3 vertices, got " + std::to_string(vertices.size()));
+  return construct(m, [&] { return std::make_shared<const PolygonContainer>(vertices); });
+}
+
+ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx) {
+  const Value file = m.get("file", "an STL, OFF or OBJ surface, relative to the scene file's folder");
+  const std::string name = file.string();
+  if (name.empty()) file.fail("must name a file");
+  const std::filesystem::path p(name);
+  const std::string resolved = (p.is_absolute() ? p : (ctx.folder / p)).lexically_normal().string();
+  {
+    std::ifstream probe(resolved, std::ios::binary);
+    if (!probe || std::filesystem::is_directory(resolved)) {
+      const int err = errno;
+      std::error_code ec;
+      const std::string shown_path = std::filesystem::absolute(resolved, ec).lexically_normal().string();
+      file.fail("cannot read mesh file '" + (ec ? resolved : shown_path) + "'" +
+                (err ? std::string(": ") + std::strerror(err) : ""));
+    }
+  }
+  double scale = 1.0;
+  if (auto s = m.find("scale")) scale = s->positive();
+  return construct(m, [&]() -> ContainerPtr<3> { return MeshContainer::from_file(resolved, scale); });
+}
+
+template <int D>
+ContainerPtr<D> parse_container(const Value& v, const Context& ctx) {
+  const Map m = v.map();
+  m.check_known(kContainerKeys);
+  const Keys& mine = D == 3 ? kContainerTypes3 : kContainerTypes2;
+  const Keys& other = D == 3 ? kContainerTypes2 : kContainerTypes3;
+  const Value t = m.get("type", "one of " + join(mine));
+  const std::string type = t.string();
+  if (contains(other, type))
+    t.fail("'" + type + "' is a " + std::to_string(5 - D) + "D container but the scene has dimension: " + std::to_string(D) +
+           "; allowed in " + std::to_string(D) + "D: " + join(mine));
+  t.choice(mine);
+  m.check_used(container_keys(type), "a '" + type + "' container");
+  if constexpr (D == 3) {
+    if (type == "box") return parse_box<3>(m);
+    if (type == "sphere") return parse_ball<3>(m);
+    if (type == "cylinder") return parse_cylinder(m);
+    return parse_mesh(m, ctx);
+  } else {
+    (void)ctx;
+    if (type == "rectangle") return parse_box<2>(m);
+    if (type == "disk") return parse_ball<2>(m);
+    return parse_polygon(m);
+  }
+}
+
+// --- radius distributions ----------------------------------------------------------------
+
+const Keys kDistributionKeys = {"distribution", "value", "min", "max", "mean", "std", "median", "mu",
+                                "sigma", "values", "edges", "weights", "curve", "basis"};
+const Keys kDistributions = {"constant", "uniform", "normal", "lognormal", "discrete", "histogram", "gradation"};
+
+Keys distribution_keys(const std::string& kind) {
+  if (kind == "constant") return {"distribution", "value"};
+  if (kind == "uniform") return {"distribution", "min", "max"};
+  if (kind == "normal") return {"distribution", "mean", "std", "min", "max"};
+  if (kind == "lognormal") return {"distribution", "median", "mu", "sigma", "min", "max"};
+  if (kind == "discrete") return {"distribution", "values"};
+  if (kind == "histogram") return {"distribution", "edges", "weights"};
+  return {"distribution", "curve", "basis"};  // gradation
+}
+
+// min and max of a bounded distribution: 0 < min < max.
+std::pair<double, double> bounds(const Map& m, const std::string& why) {
+  const double lo = m.get("min", why).positive();
+  const Value max = m.get("max", why);
+  const double hi = max.positive();
+  if (!(lo < hi)) max.fail("must be greater than min (min " + m.get("min").node().Scalar() + ", max " + max.node().Scalar() + ")");
+  return {lo, hi};
+}
+
+RadiusDistributionPtr parse_distribution(const Value& v, int dimension) {
+  const Map m = v.map();
+  m.check_known(kDistributionKeys);
+  const std::string kind = m.get("distribution", "one of " + join(kDistributions)).choice(kDistributions);
+  m.check_used(distribution_keys(kind), "the '" + kind + "' distribution");
+  const std::string truncation = "every distribution is bounded: the radius is truncated to [min, max]";
+  if (kind == "constant") {
+    const double r = m.get("value", "the radius").positive();
+    return construct(m, [&] { return std::make_shared<const ConstantRadius>(r); });
+  }
+  if (kind == "uniform") {
+    const auto [lo, hi] = bounds(m, "uniform on [min, max]");
+    return construct(m, [&] { return std::make_shared<const UniformRadius>(lo, hi); });
+  }
+  if (kind == "normal") {
+    const double mean = m.get("mean").number();
+    const double sd = m.get("std", "standard deviation of the radius").positive();
+    const auto [lo, hi] = bounds(m, truncation);
+    return construct(m, [&] { return std::make_shared<const TruncatedNormalRadius>(mean, sd, lo, hi); });
+  }
+  if (kind == "lognormal") {
+    const auto median = m.find("median");
+    const auto mu = m.find("mu");
+    if (median && mu) mu->fail("give either median or mu (= ln median), not both");
+    if (!median && !mu) m.get("median", "or mu = ln(median)");
+    const double sigma = m.get("sigma", "standard deviation of ln r").positive();
+    const auto [lo, hi] = bounds(m, truncation);
+    if (median) {
+      const double med = median->positive();
+      return construct(m, [&] { return std::make_shared<const LognormalRadius>(LognormalRadius::from_median(med, sigma, lo, hi)); });
+    }
+    const double mu_log = mu->number();
+    return construct(m, [&] { return std::make_shared<const LognormalRadius>(mu_log, sigma, lo, hi); });
+  }
+  if (kind == "discrete") {
+    const Value values = m.get("values", "[[radius, count weight], ...]");
+    auto pairs = values.pairs("[radius, count weight]");
+    if (pairs.empty()) values.fail("needs at least one [radius, weight] pair");
+    return construct(m, [&] { return std::make_shared<const DiscreteRadius>(pairs); });
+  }
+  if (kind == "histogram") {
+    const Value edges_v = m.get("edges", "radius bin edges, increasing");
+    const auto edges = edges_v.numbers();
+    const Value weights_v = m.get("weights", "one count weight per bin");
+    const auto weights = weights_v.numbers();
+    if (edges.size() < 2) edges_v.fail("needs at least 2 edges (one bin), got " + std::to_string(edges.size()));
+    if (weights.size() + 1 != edges.size())
+      weights_v.fail("needs one weight per bin: " + std::to_string(edges.size() - 1) + " for " + std::to_string(edges.size()) +
+                     " edges, got " + std::to_string(weights.size()));
+    return construct(m, [&] { return std::make_shared<const HistogramRadius>(edges, weights); });
+  }
+  // gradation
+  const auto curve = m.get("curve", "[[sieve diameter, % passing], ...]").pairs("[sieve diameter, % passing]");
+  GradationRadius::Basis basis = GradationRadius::Basis::Mass;
+  if (auto b = m.find("basis")) basis = b->choice({"mass", "count"}) == "mass" ? GradationRadius::Basis::Mass : GradationRadius::Basis::Count;
+  return construct(m, [&] { return std::make_shared<const GradationRadius>(curve, basis, dimension); });
+}
+
+// --- packer, stop, output ------------------------------------------------------------------
+
+template <int D>
+void parse_packer(const Value& v, const Container<D>& container, PackerOptions& p) {
+  const Map m = v.map();
+  m.check_known({"method", "front", "candidate", "pair_order", "walls", "radius_pool", "contact_tolerance",
+                 "grid_cell_factor", "hierarchical_grid_ratio", "seed_point"});
+  if (auto x = m.find("method")) p.method = x->choice({"front"});
+  if (auto x = m.find("front")) {
+    const std::string s = x->choice({"closest", "random", "fifo"});
+    p.front_pick = s == "closest" ? FrontPick::ClosestToSeed : s == "random" ? FrontPick::Random : FrontPick::Fifo;
+  }
+  if (auto x = m.find("candidate"))
+    p.candidate = x->choice({"closest", "first"}) == "closest" ? CandidateChoice::ClosestToSeed : CandidateChoice::First;
+  if (auto x = m.find("pair_order"))
+    p.pair_order = x->choice({"nearest", "index"}) == "nearest" ? PairOrder::NearestFirst : PairOrder::Index;
+  if (auto x = m.find("walls")) p.walls_as_bodies = x->boolean();
+  if (auto x = m.find("radius_pool")) {
+    const std::uint64_t n = x->unsigned_integer();
+    if (n < 1 || n > 1000000) x->fail("must be an integer from 1 to 1000000 (got " + x->node().Scalar() + ")");
+    p.radius_pool = static_cast<int>(n);
+  }
+  if (auto x = m.find("contact_tolerance")) {
+    const double t = x->number();
+    if (!(t > 0 && t < 1e-3)) x->fail("must be in (0, 1e-3): it is relative to the particle radii (got " + x->node().Scalar() + ")");
+    p.contact_tolerance = t;
+  }
+  if (auto x = m.find("grid_cell_factor")) {
+    const double f = x->number();
+    if (!(f >= 1)) x->fail("must be >= 1 (got " + x->node().Scalar() + ")");
+    p.grid_cell_factor = f;
+  }
+  if (auto x = m.find("hierarchical_grid_ratio")) {
+    const double f = x->number();
+    if (!(f > 1)) x->fail("must be > 1 (got " + x->node().Scalar() + ")");
+    p.hierarchical_grid_ratio = f;
+  }
+  if (auto x = m.find("seed_point")) {
+    const Vec<D> s = x->vec<D>(dim_text(D));
+    if (!container.inside(s)) x->fail("the point is outside the container (" + container.describe() + ")");
+    p.seed_point = std::vector<double>(s.data(), s.data() + D);
+  }
+}
+
+void parse_stop(const Value& v, StopCriteria& s) {
+  const Map m = v.map();
+  m.check_known({"particles", "volume_fraction", "time"});
+  if (auto x = m.find("particles")) {
+    const std::uint64_t n = x->unsigned_integer(true);
+    if (n == 0) x->fail("must be a positive integer (got " + x->node().Scalar() + ")");
+    s.max_particles = n;
+  }
+  if (auto x = m.find("volume_fraction")) {
+    const double phi = x->number();
+    if (!(phi > 0 && phi < 1)) x->fail("must be in (0, 1) (got " + x->node().Scalar() + ")");
+    s.target_volume_fraction = phi;
+  }
+  if (auto x = m.find("time")) s.time_limit_seconds = x->positive();
+}
+
+std::vector<OutputSpec> parse_outputs(const Value& v) {
+  if (!v.node().IsSequence()) v.fail("expected a list of {format, path} entries, got " + shown(v.node()));
+  std::vector<OutputSpec> out;
+  for (const auto& item : v.list()) {
+    const Map m = item.map();
+    m.check_known({"format", "path"});
+    const Value path = m.get("path", "the file to write");
+    OutputSpec spec;
+    spec.path = path.string();
+    if (spec.path.empty()) path.fail("must not be empty");
+    if (auto f = m.find("format")) {
+      const std::string name = f->string();
+      try {
+        spec.format = output_format_name(parse_output_format(name));
+      } catch (const std::invalid_argument&) {
+        f->choice({"vtu", "yade", "lammps", "csv", "json"});  // fails with the list
+      }
+    } else {
+      try {
+        spec.format = output_format_name(format_from_extension(spec.path));
+      } catch (const std::invalid_argument& e) {
+        path.fail(std::string(e.what()) + "; or give 'format'");
+      }
+    }
+    out.push_back(spec);
+  }
+  return out;
+}
+
+template <int D>
+void check_sizes_fit(const Value& radius, const Container<D>& container, const RadiusDistribution& radii) {
+  // Necessary condition only: a ball of radius r needs 2r of room on every axis.
+  const Vec<D> extent = container.bounds().size();
+  const double room = extent.minCoeff();
+  if (2 * radii.r_min() > room) {
+    std::ostringstream os;
+    os.precision(6);
+    os << "the smallest particle (radius " << radii.r_min() << ") does not fit in the container ("
+       << container.describe() << ", narrowest extent " << room << ")";
+    radius.fail(os.str());
+  }
+}
+
+template <int D>
+void parse_body(const Map& root, Scene& scene, const Context& ctx) {
+  ContainerPtr<D> container = parse_container<D>(root.get("container", "the region to fill"), ctx);
+  const Map particles = root.get("particles", "with 'radius: {distribution: ...}'").map();
+  particles.check_known({"radius"});
+  const Value radius = particles.get("radius", "the radius distribution, e.g. {distribution: uniform, min: 1, max: 2}");
+  scene.radii = parse_distribution(radius, D);
+  check_sizes_fit<D>(radius, *container, *scene.radii);
+  if (auto p = root.find("packer")) parse_packer<D>(*p, *container, scene.packer);
+  if constexpr (D == 3) scene.container3 = std::move(container);
+  else scene.container2 = std::move(container);
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& source_name) {
+  Context ctx;
+  ctx.file = source_name;
+  ctx.folder = std::filesystem::path(source_name).parent_path();
+
+  YAML::Node doc;
+  try {
+    doc = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    ctx.fail(e.mark, "", "YAML syntax error: " + e.msg);
+  }
+  YAML::Mark start;  // line 0, column 0
+  start.line = 0;
+  start.column = 0;
+  if (!doc.IsDefined() || doc.IsNull()) ctx.fail(start, "", "the scene is empty (required keys: dimension, container, particles)");
+
+  Scene scene;
+  scene.source_path = source_name;
+  scene.source_text = text;
+  try {
+    const Map root(ctx, doc, "", doc.Mark().is_null() ? start : doc.Mark());
+    root.check_known({"dimension", "seed", "container", "particles", "packer", "stop", "output"});
+    const Value dim = root.get("dimension", "2 or 3");
+    const std::uint64_t d = dim.unsigned_integer();
+    if (d != 2 && d != 3) dim.fail("must be 2 or 3 (got " + dim.node().Scalar() + ")");
+    scene.dimension = static_cast<int>(d);
+    if (auto s = root.find("seed")) scene.seed = s->unsigned_integer();
+    if (scene.dimension == 3) parse_body<3>(root, scene, ctx);
+    else parse_body<2>(root, scene, ctx);
+    if (auto s = root.find("stop")) parse_stop(*s, scene.stop);
+    if (auto o = root.find("output")) scene.outputs = parse_outputs(*o);
+  } catch (const YAML::Exception& e) {  // not expected: every access is checked first
+    ctx.fail(e.mark, "", e.msg);
+  }
+  return scene;
+}
+
+Scene load_scene(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in || std::filesystem::is_directory(path)) {
+    const int err = errno;
+    throw SceneError(path, 0, 0, "", std::string("cannot read the scene file") + (err ? std::string(": ") + std::strerror(err) : ""));
+  }
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return parse_scene(text, path);
+}
+
+}  // namespace fp
