@@ -1,0 +1,162 @@
+// The independent validator: planted defects of 1e-8 relative size are found and named.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "core/geometry/box_container.hpp"
+#include "core/metrics/validate.hpp"
+#include "core/sampling/uniform_radius.hpp"
+#include "tests/metrics/metrics_test_util.hpp"
+
+namespace fp {
+namespace {
+
+// 22^3 = 10648 balls of radius U[0.5, 0.9] on a jittered lattice of spacing 2, at offset 100.
+Packing<3> clean_packing() { return test::jittered_lattice<3>(22, 0.5, 0.9, 0.05, 42, 100.0); }
+BoxContainer<3> clean_box() { return BoxContainer<3>(Vec3::Constant(98.0), Vec3::Constant(144.0)); }
+
+TEST(Validate, CleanRandomPackingPasses) {
+  const auto p = clean_packing();
+  const UniformRadius dist(0.5, 0.9);
+  const ValidationReport rep = validate_packing<3>(p, clean_box(), &dist);
+  EXPECT_TRUE(rep.ok) << rep.summary();
+  EXPECT_EQ(rep.particles, p.size());
+  EXPECT_TRUE(rep.worst.empty());
+  EXPECT_EQ(rep.max_overlap_rel, 0.0);
+  EXPECT_EQ(rep.max_outside_rel, 0.0);
+  EXPECT_GT(rep.radii_ks_pvalue, 0.001);
+  EXPECT_LT(rep.radii_ks_statistic, 0.03);
+  EXPECT_NE(rep.summary().find("validate: OK"), std::string::npos);
+}
+
+TEST(Validate, FindsAPlantedOverlapOf1e8RMin) {
+  auto p = clean_packing();
+  const std::size_t i = 5000, j = 5001;  // x-neighbours on the lattice
+  double r_min = p.radii[0];
+  for (double r : p.radii) r_min = std::min(r_min, r);
+  p.radii[i] = p.radii[j] = 0.9;
+  const double delta = 1e-8 * r_min;
+  p.centers[i] = p.centers[j] - Vec3(1.8 - delta, 0.0, 0.0);
+  // Brute force: this is the only overlapping pair.
+  std::size_t overlapping = 0;
+  for (std::size_t a = 0; a < p.size(); ++a)
+    for (std::size_t b = a + 1; b < p.size(); ++b)
+      overlapping += (p.centers[a] - p.centers[b]).norm() < p.radii[a] + p.radii[b] ? 1 : 0;
+  ASSERT_EQ(overlapping, 1u);
+
+  const ValidationReport rep = validate_packing<3>(p, clean_box(), nullptr);
+  EXPECT_FALSE(rep.ok);
+  EXPECT_EQ(rep.overlap_count, 1u);
+  ASSERT_EQ(rep.worst.size(), 1u);
+  EXPECT_EQ(rep.worst[0].kind, "overlap");
+  EXPECT_EQ(rep.worst[0].i, static_cast<std::int64_t>(i));
+  EXPECT_EQ(rep.worst[0].j, static_cast<std::int64_t>(j));
+  EXPECT_NEAR(rep.worst[0].value_rel, 1e-8, 1e-11);
+  EXPECT_NEAR(rep.max_overlap_rel, 1e-8, 1e-11);
+  EXPECT_NE(rep.summary().find("overlap 5000-5001"), std::string::npos) << rep.summary();
+  // The same overlap is within a tolerance of 1e-7.
+  EXPECT_TRUE(validate_packing<3>(p, clean_box(), nullptr, 1e-7).ok);
+}
+
+TEST(Validate, FindsABall1e8ROutsideTheBox) {
+  auto p = clean_packing();
+  const BoxContainer<3> box = clean_box();
+  const std::size_t k = 21 * 484 + 13, tangent = 13;  // top layer; bottom row
+  p.centers[k][2] = 144.0 - p.radii[k] + 1e-8 * p.radii[k];
+  p.centers[tangent][1] = 98.0 + p.radii[tangent];  // tangent to a wall: fine
+  const ValidationReport rep = validate_packing<3>(p, box, nullptr);
+  EXPECT_FALSE(rep.ok);
+  EXPECT_EQ(rep.outside_count, 1u);
+  EXPECT_EQ(rep.overlap_count, 0u);
+  ASSERT_EQ(rep.worst.size(), 1u);
+  EXPECT_EQ(rep.worst[0].kind, "outside");
+  EXPECT_EQ(rep.worst[0].i, static_cast<std::int64_t>(k));
+  EXPECT_EQ(rep.worst[0].j, -1);
+  EXPECT_NEAR(rep.worst[0].value_rel, 1e-8, 1e-11);
+  EXPECT_NEAR(rep.max_outside_rel, 1e-8, 1e-11);
+}
+
+TEST(Validate, FindsAPlantedOverlapBetweenDisks) {
+  auto p = test::jittered_lattice<2>(100, 0.5, 0.9, 0.05, 9, -50.0);
+  const BoxContainer<2> box(Vec2::Constant(-52.0), Vec2::Constant(150.0));
+  p.radii[1234] = p.radii[1334] = 0.7;  // y-neighbours
+  p.centers[1334] = p.centers[1234] + Vec2(0.0, 1.4 - 1e-8 * 0.5);
+  const ValidationReport rep = validate_packing<2>(p, box, nullptr);
+  EXPECT_EQ(rep.overlap_count, 1u);
+  ASSERT_FALSE(rep.worst.empty());
+  EXPECT_EQ(rep.worst[0].i, 1234);
+  EXPECT_EQ(rep.worst[0].j, 1334);
+}
+
+TEST(Validate, RadiiAgainstTheDistribution) {
+  auto p = clean_packing();
+  const UniformRadius dist(0.5, 0.9);
+  p.radii[10] = 0.95;            // 5.6 % above r_max
+  p.radii[11] = 0.9 * (1 + 1e-13);  // inside the 1e-12 slack
+  const ValidationReport rep = validate_packing<3>(p, clean_box(), &dist);
+  EXPECT_EQ(rep.radius_count, 1u);
+  ASSERT_FALSE(rep.worst.empty());
+  EXPECT_EQ(rep.worst[0].kind, "radius_out_of_range");
+  EXPECT_EQ(rep.worst[0].i, 10);
+  EXPECT_NEAR(rep.worst[0].value_rel, 0.05 / 0.9, 1e-12);
+  // Radii drawn from U[0.5, 0.9] checked against U[0.5, 1.3]: K-S rejects them.
+  const UniformRadius wider(0.5, 1.3);
+  const ValidationReport ks = validate_packing<3>(clean_packing(), clean_box(), &wider);
+  EXPECT_TRUE(ks.ok);  // K-S is reported, not a failure
+  EXPECT_GT(ks.radii_ks_statistic, 0.25);
+  EXPECT_LT(ks.radii_ks_pvalue, 1e-10);
+  // Without a distribution only non-positive radii are flagged, and K-S is not computed.
+  auto q = clean_packing();
+  q.radii[3] = 0.0;
+  const ValidationReport none = validate_packing<3>(q, clean_box(), nullptr);
+  EXPECT_EQ(none.radius_count, 1u);
+  EXPECT_TRUE(std::isnan(none.radii_ks_statistic));
+}
+
+TEST(Validate, NonFiniteBallsAreIssuesAndTheRestIsStillChecked) {
+  auto p = clean_packing();
+  p.centers[20][0] = std::numeric_limits<double>::quiet_NaN();
+  p.radii[21] = std::numeric_limits<double>::infinity();
+  p.radii[5000] = p.radii[5001] = 0.9;
+  p.centers[5000] = p.centers[5001] - Vec3(1.7, 0.0, 0.0);
+  const ValidationReport rep = validate_packing<3>(p, clean_box(), nullptr);
+  EXPECT_EQ(rep.non_finite_count, 2u);
+  EXPECT_EQ(rep.overlap_count, 1u);
+  ASSERT_EQ(rep.worst.size(), 3u);
+  EXPECT_EQ(rep.worst[0].kind, "non_finite");
+  EXPECT_EQ(rep.worst[1].kind, "non_finite");
+  EXPECT_EQ(rep.worst[2].kind, "overlap");
+}
+
+TEST(Validate, KeepsTheTwentyWorst) {
+  auto lat = test::simple_cubic(10, 1.0, Vec3(0, 0, 0));
+  for (int k = 0; k < 60; ++k) lat.packing.radii[k * 10] = 0.5 + 0.001 * (k + 1);  // grows overlaps
+  const BoxContainer<3> box(Vec3::Constant(-1.0), Vec3::Constant(10.0));
+  const ValidationReport rep = validate_packing<3>(lat.packing, box, nullptr);
+  EXPECT_GT(rep.overlap_count, 20u);
+  ASSERT_EQ(rep.worst.size(), 20u);
+  for (std::size_t k = 1; k < rep.worst.size(); ++k) EXPECT_GE(rep.worst[k - 1].value_rel, rep.worst[k].value_rel);
+  EXPECT_EQ(rep.worst[0].value_rel, rep.max_overlap_rel);
+  EXPECT_EQ(rep.outside_count, 0u);
+}
+
+TEST(Validate, TouchingLatticeAtOffset1e6HasNoFalseOverlap) {
+  // |a|^2 - 2ab + |b|^2 would lose ~1e-4 here; the difference vector loses nothing.
+  const auto lat = test::simple_cubic(20, 1.0, Vec3(1e6, 1e6, 1e6));
+  const BoxContainer<3> box(Vec3::Constant(1e6 - 0.5), Vec3::Constant(1e6 + 19.5));
+  const ValidationReport rep = validate_packing<3>(lat.packing, box, nullptr);
+  EXPECT_TRUE(rep.ok) << rep.summary();
+  EXPECT_EQ(rep.max_overlap_rel, 0.0);
+  EXPECT_GE(rep.pairs_checked, 3u * 20 * 20 * 19);  // every touching pair is a candidate
+}
+
+TEST(Validate, EmptyPackingIsValid) {
+  const ValidationReport rep = validate_packing<3>(Packing<3>{}, clean_box(), nullptr);
+  EXPECT_TRUE(rep.ok);
+  EXPECT_EQ(rep.pairs_checked, 0u);
+  EXPECT_THROW(validate_packing<3>(Packing<3>{}, clean_box(), nullptr, -1.0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace fp
