@@ -62,9 +62,14 @@ class SphereContactSolver final : public ContactSolver<D> {
   int solve(std::span<const Body<D>> fixed, const Mobile<D>& mobile,
             std::span<Placement<D>> out) const override {
     if (fixed.size() != static_cast<std::size_t>(D) || fixed.empty()) return 0;
-    const Body<D>& b0 = fixed[0];
-    const Vec<D> origin = b0.is_wall() ? b0.wall->point : b0.center;
-    const double scale = b0.is_wall() ? mobile.radius : b0.radius + mobile.radius;
+    // Frame on the first particle if there is one: a wall's reference point (a box corner, a
+    // facet vertex) can be far from the contact, and the frame's rounding would then exceed the
+    // tolerance the verification is meant to guarantee.
+    const Body<D>* b0 = &fixed[0];
+    for (const Body<D>& b : fixed)
+      if (!b.is_wall()) { b0 = &b; break; }
+    const Vec<D> origin = b0->is_wall() ? b0->wall->point : b0->center;
+    const double scale = b0->is_wall() ? mobile.radius : b0->radius + mobile.radius;
     return solve_in_frame(fixed, mobile.radius, origin, scale, out);
   }
 
@@ -352,6 +357,11 @@ class SphereContactSolver final : public ContactSolver<D> {
   /// Circle (centre m, unit normal k, radius rc) against a cylinder locus: roots of
   /// f(t) = |perp(m + rc(cos t e1 + sin t e2) - p)|^2 - rho^2, a trigonometric polynomial of
   /// degree 2 with at most 4 roots, bracketed on a fixed grid and refined by Newton/bisection.
+  /// A sign test per cell misses two roots inside one cell (and sees one of three). With M a
+  /// bound on |f''|, a cell is skipped when f cannot vanish on it (|f - linear interpolant| <=
+  /// M h^2 / 8), solved directly when f is monotone on it (|f'(t0)| > M h), and otherwise split
+  /// where f' changes sign on a finer sub-grid: each monotone piece holds a root exactly when its
+  /// ends differ in sign.
   static int circle_cylinder(const Vec3& m, const Vec3& k, double rc, const Locus& C, Sols& s)
     requires(D == 3) {
     Vec3 e1 = (std::abs(k.x()) < 0.6 ? Vec3::UnitX() : Vec3::UnitY()).cross(k).normalized();
@@ -363,29 +373,66 @@ class SphereContactSolver final : public ContactSolver<D> {
       const Vec3 w = g + std::cos(t) * p1 + std::sin(t) * p2;
       return 2.0 * w.dot(-std::sin(t) * p1 + std::cos(t) * p2);
     };
-    constexpr int kSteps = 96;
-    int n = 0;
-    double t0 = 0.0, f0 = f(0.0);
-    for (int i = 1; i <= kSteps && n < ContactSolver<D>::kMaxSolutions; ++i) {
-      const double t1 = 2.0 * kPi * i / kSteps;
-      const double f1 = f(t1);
-      if (f0 == 0.0 || (f0 < 0.0) != (f1 < 0.0)) {
-        double lo = t0, hi = t1, flo = f0;
-        double t = 0.5 * (lo + hi);
-        for (int it = 0; it < 100; ++it) {
-          const double ft = f(t);
-          if (ft == 0.0) break;
-          if ((ft < 0.0) == (flo < 0.0)) { lo = t; flo = ft; } else { hi = t; }
-          const double d = df(t);
-          double tn = (d != 0.0) ? t - ft / d : 0.5 * (lo + hi);
-          if (!(tn > lo && tn < hi)) tn = 0.5 * (lo + hi);
-          if (std::abs(tn - t) <= 1e-15 * (1.0 + std::abs(t))) { t = tn; break; }
-          t = tn;
-        }
-        s[n++] = m + rc * (std::cos(t) * e1 + std::sin(t) * e2);
+    // Root in [lo, hi] where f(lo) has the sign of flo and f(hi) the other.
+    auto refine = [&](double lo, double hi, double flo) {
+      double t = 0.5 * (lo + hi);
+      for (int it = 0; it < 100; ++it) {
+        const double ft = f(t);
+        if (ft == 0.0) break;
+        if ((ft < 0.0) == (flo < 0.0)) { lo = t; flo = ft; } else { hi = t; }
+        const double d = df(t);
+        double tn = (d != 0.0) ? t - ft / d : 0.5 * (lo + hi);
+        if (!(tn > lo && tn < hi)) tn = 0.5 * (lo + hi);
+        if (std::abs(tn - t) <= 1e-15 * (1.0 + std::abs(t))) { t = tn; break; }
+        t = tn;
       }
-      t0 = t1;
-      f0 = f1;
+      return t;
+    };
+    auto point = [&](double t) -> Vec3 { return m + rc * (std::cos(t) * e1 + std::sin(t) * e2); };
+    constexpr int kSteps = 96, kSub = 16;
+    constexpr int kMax = ContactSolver<D>::kMaxSolutions;
+    const double h = 2.0 * kPi / kSteps;
+    // |f''| <= 2|w'|^2 + 2|w||w''| with |w'|, |w''| <= |p1| + |p2| and |w| <= |g| + |p1| + |p2|.
+    const double P = p1.norm() + p2.norm();
+    const double f2max = 2.0 * P * (P + g.norm() + P);
+    std::array<double, kSteps + 1> fs;
+    for (int i = 0; i < kSteps; ++i) fs[i] = f(h * i);
+    fs[kSteps] = fs[0];
+    int n = 0;
+    auto emit = [&](double t) {
+      if (n < kMax) s[n++] = point(t);
+    };
+    for (int i = 0; i < kSteps && n < kMax; ++i) {
+      const double t0 = h * i, t1 = t0 + h, f0 = fs[i], f1 = fs[i + 1];
+      if (f0 == 0.0) emit(t0);  // a root on the grid belongs to the cell it starts
+      const bool change = f0 != 0.0 && f1 != 0.0 && (f0 < 0.0) != (f1 < 0.0);
+      if (!change && std::min(std::abs(f0), std::abs(f1)) > 0.125 * f2max * h * h) continue;
+      double u = t0, fu = f0, du = df(t0);
+      if (std::abs(du) > f2max * h) {  // f' keeps its sign on the cell
+        if (change) emit(refine(t0, t1, f0));
+        continue;
+      }
+      auto piece = [&](double v, double fv) {  // f is monotone on [u, v]; a root at u is out already
+        if (fu != 0.0 && fv != 0.0 && (fu < 0.0) != (fv < 0.0)) emit(refine(u, v, fu));
+        u = v;
+        fu = fv;
+      };
+      const double sub = h / kSub;
+      for (int j = 1; j <= kSub; ++j) {
+        const double b = t0 + sub * j;
+        const double db = df(b);
+        if ((du < 0.0) == (db < 0.0)) continue;
+        double lo = b - sub, hi = b;  // a critical point of f in [lo, hi]
+        for (int it = 0; it < 40; ++it) {
+          const double mid = 0.5 * (lo + hi);
+          if ((df(mid) < 0.0) == (du < 0.0)) lo = mid; else hi = mid;
+        }
+        const double v = 0.5 * (lo + hi), fv = f(v);
+        piece(v, fv);
+        if (fv == 0.0) emit(v);  // a double root
+        du = db;
+      }
+      piece(t1, f1);
     }
     return n;
   }

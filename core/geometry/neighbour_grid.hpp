@@ -26,7 +26,7 @@ class NeighbourGrid {
     if (!(cell_factor >= 1.0)) throw std::invalid_argument("NeighbourGrid: cell_factor must be >= 1");
     int levels = 1;
     if (r_max / r_min > hierarchy_ratio)
-      levels = 1 + static_cast<int>(std::ceil(std::log2(r_max / r_min) - 1e-12));
+      levels = std::max(1, static_cast<int>(std::ceil(std::log2(r_max / r_min) - 1e-12)));  // one per octave of [r_min, r_max]
     levels_.resize(levels);
     for (int l = 0; l < levels; ++l) {
       Level& L = levels_[l];
@@ -115,8 +115,8 @@ class NeighbourGrid {
   }
   static std::int64_t clamp_cell(const Level& L, int a, double x) {
     if (!(x > 0.0)) return 0;  // also catches NaN
-    const auto i = static_cast<std::int64_t>(x);
-    return i >= L.dims[a] ? L.dims[a] - 1 : i;
+    if (!(x < static_cast<double>(L.dims[a]))) return L.dims[a] - 1;  // before the cast: huge x overflows int64
+    return static_cast<std::int64_t>(x);
   }
   static std::int64_t flat_index(const Level& L, const Vec<D>& c) {
     std::int64_t k = 0, stride = 1;
