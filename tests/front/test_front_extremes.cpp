@@ -1,0 +1,105 @@
+// Scale extremes: a wide size ratio (the hierarchical grid), coordinates far from the origin,
+// and micrometre radii. The tolerances stay relative: overlap <= 1e-9 r_min, inside to 1e-9 r.
+#include <gtest/gtest.h>
+
+#include "front_checks.hpp"
+
+namespace fptest {
+namespace {
+
+template <int D>
+void pack_valid(const std::string& name, const std::string& yaml, const SignedDistance<D>& sd, std::size_t min_n,
+                bool expect_wall_contacts = true) {
+  const fp::Scene scene = scene_from_yaml(yaml);
+  const auto res = fp::pack<D>(scene);
+  SCOPED_TRACE(name + ": " + std::to_string(res.packing.size()) + " particles");
+  EXPECT_GE(res.packing.size(), min_n);
+  const Validity v = expect_valid<D>(res.packing, sd, scene.radii->r_min(), scene.radii->r_max(), name);
+  if (expect_wall_contacts) EXPECT_GT(v.containment.touching_walls, 0u);
+  // Contacts are still exact to the relative tolerance: most particles touch three (two) others.
+  const std::vector<int> z = particle_contacts<D>(res.packing, kOverlapTol);
+  std::size_t connected = 0;
+  for (int k : z) connected += k >= D ? 1 : 0;
+  EXPECT_GT(static_cast<double>(connected), 0.8 * static_cast<double>(z.size()));
+}
+
+TEST(FrontExtremes, SizeRatio50In3D) {
+  // Lognormal over [0.002, 0.1]: the hierarchical grid, neighbour sets of hundreds.
+  pack_valid<3>("ratio 50, 3D", R"(
+dimension: 3
+seed: 43
+container: {type: box, min: [0, 0, 0], max: [0.5, 0.5, 0.5]}
+particles: {radius: {distribution: lognormal, median: 0.01, sigma: 0.8, min: 0.002, max: 0.1}}
+stop: {particles: 4000}
+)", box_distance<3>(Vec3::Zero(), Vec3::Constant(0.5)), 300, false);
+}
+
+TEST(FrontExtremes, SizeRatio50In2D) {
+  // Mostly small disks with a few up to 50 times larger.
+  pack_valid<2>("ratio 50, 2D", R"(
+dimension: 2
+seed: 42
+container: {type: disk, center: [0, 0], radius: 0.6}
+particles: {radius: {distribution: histogram, edges: [0.002, 0.01, 0.1], weights: [100, 1]}}
+packer: {radius_pool: 4}
+)", ball_distance<2>(Vec2::Zero(), 0.6), 2000, false);
+}
+
+TEST(FrontExtremes, CoordinatesOffsetByOneMillion3D) {
+  // 1e6 has an ulp of 1.2e-10: radii of order 1 keep 1e-9 relative resolution.
+  const double o = 1e6;
+  pack_valid<3>("offset 1e6, 3D", R"(
+dimension: 3
+seed: 44
+container: {type: box, min: [1000000, 1000000, 1000000], max: [1000025, 1000025, 1000025]}
+particles: {radius: {distribution: uniform, min: 1, max: 2}}
+)", box_distance<3>(Vec3::Constant(o), Vec3::Constant(o + 25)), 400);
+}
+
+TEST(FrontExtremes, CoordinatesOffsetByOneMillionSphere3D) {
+  pack_valid<3>("offset 1e6 sphere", R"(
+dimension: 3
+seed: 45
+container: {type: sphere, center: [-1000000, 1000000, 1000000], radius: 14}
+particles: {radius: {distribution: uniform, min: 1, max: 2}}
+)", ball_distance<3>(Vec3(-1e6, 1e6, 1e6), 14), 300);
+}
+
+TEST(FrontExtremes, CoordinatesOffsetByOneMillion2D) {
+  pack_valid<2>("offset 1e6, 2D", R"(
+dimension: 2
+seed: 46
+container: {type: rectangle, min: [1000000, -1000000], max: [1000080, -999920]}
+particles: {radius: {distribution: uniform, min: 1, max: 2}}
+)", box_distance<2>(Vec2(1e6, -1e6), Vec2(1e6 + 80, -1e6 + 80)), 500);
+}
+
+TEST(FrontExtremes, MicrometreRadii3D) {
+  pack_valid<3>("radii 1e-6, 3D", R"(
+dimension: 3
+seed: 47
+container: {type: box, min: [0, 0, 0], max: [5.0e-5, 5.0e-5, 5.0e-5]}
+particles: {radius: {distribution: uniform, min: 1.0e-6, max: 2.0e-6}}
+)", box_distance<3>(Vec3::Zero(), Vec3::Constant(5e-5)), 3000);
+}
+
+TEST(FrontExtremes, MicrometreRadiiCylinder3D) {
+  pack_valid<3>("radii 1e-6, cylinder", R"(
+dimension: 3
+seed: 48
+container: {type: cylinder, base: [1.0e-5, 0, 0], axis: [1, 1, 0], radius: 2.0e-5, height: 4.0e-5}
+particles: {radius: {distribution: uniform, min: 1.0e-6, max: 2.0e-6}}
+)", cylinder_distance(Vec3(1e-5, 0, 0), Vec3(1, 1, 0), 2e-5, 4e-5), 1000);
+}
+
+TEST(FrontExtremes, MicrometreRadii2D) {
+  pack_valid<2>("radii 1e-6, 2D", R"(
+dimension: 2
+seed: 49
+container: {type: polygon, vertices: [[0, 0], [1.0e-4, 0], [1.0e-4, 5.0e-5], [5.0e-5, 5.0e-5], [5.0e-5, 1.0e-4], [0, 1.0e-4]]}
+particles: {radius: {distribution: uniform, min: 1.0e-6, max: 2.0e-6}}
+)", polygon_distance({{0, 0}, {1e-4, 0}, {1e-4, 5e-5}, {5e-5, 5e-5}, {5e-5, 1e-4}, {0, 1e-4}}), 500);
+}
+
+}  // namespace
+}  // namespace fptest
