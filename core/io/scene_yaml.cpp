@@ -568,6 +568,18 @@ void check_sizes_fit(const Value& radius, const Container<D>& container, const R
        << container.describe() << ", narrowest extent " << room << ")";
     radius.fail(os.str());
   }
+  // The bounding box is not enough for a sliver or a mesh with thin parts: the deepest point the
+  // container knows must hold the smallest particle.
+  const Vec<D> deep = container.interior_point();
+  const double clearance = -container.signed_distance(deep);
+  if (radii.r_min() > clearance) {
+    std::ostringstream os;
+    os.precision(6);
+    os << "the smallest particle (radius " << radii.r_min() << ") does not fit in the container ("
+       << container.describe() << "): its deepest point found, (" << deep.transpose() << "), is only "
+       << clearance << " from the boundary";
+    radius.fail(os.str());
+  }
 }
 
 template <int D>

@@ -1,0 +1,50 @@
+// The `frontpack` command. Exit codes: 0 success, 1 run-time failure (e.g. an output cannot be
+// written), 2 bad input (scene file, options), 3 the finished packing failed validation.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+#include "cli/pack_command.hpp"
+#include "frontpack/version.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"frontpack: dense packings of spheres and disks by the advancing front"};
+  app.set_version_flag("--version", std::string("frontpack ") + fp::kVersion);
+  app.require_subcommand(1);
+
+  fp::PackCommandOptions pack;
+  CLI::App* pack_cmd = app.add_subcommand("pack", "pack the container of SCENE and write the outputs");
+  pack_cmd->add_option("scene", pack.scene_path, "scene file (YAML)")->required();
+  pack_cmd->add_option("-o,--output", pack.output_path,
+                       "write the packing to PATH (replaces the scene's output list; format from --format or the extension)");
+  // CLI11 would wrap "-1" round to 2^64-1; a seed is written as digits only.
+  const CLI::Validator unsigned_digits(
+      [](const std::string& v) {
+        return !v.empty() && v.find_first_not_of("0123456789") == std::string::npos
+                   ? std::string()
+                   : "a seed is an unsigned 64-bit integer, got '" + v + "'";
+      },
+      "UINT64");
+  pack_cmd->add_option("--seed", pack.seed, "override the scene's 64-bit seed")->check(unsigned_digits);
+  pack_cmd->add_option("--format", pack.format, "format of -o: vtu | yade | lammps | csv | json");
+  pack_cmd->add_option("--record", pack.record_path, "also write the JSON run record (without particles) to PATH");
+  pack_cmd->add_flag("-q,--quiet", pack.quiet, "no summary on stdout");
+  pack_cmd->add_flag("--progress", pack.force_progress, "progress line on stderr even when it is not a terminal");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);  // prints help/version or the usage error
+    return (code == 0) ? 0 : 2;
+  }
+  if (pack_cmd->parsed()) {
+    pack.progress = pack.force_progress || isatty(fileno(stderr));
+    return fp::run_pack_command(pack);
+  }
+  return 2;
+}

@@ -1,0 +1,206 @@
+#include "cli/pack_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/io/output_format.hpp"
+#include "core/io/packing_writers.hpp"
+#include "core/io/run_record.hpp"
+#include "core/io/scene_yaml.hpp"
+#include "core/metrics/contact_stats.hpp"
+#include "core/metrics/validate.hpp"
+#include "core/metrics/volume_fraction.hpp"
+#include "front/pack.hpp"
+#include "frontpack/version.hpp"
+
+namespace fp {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+/// A usage or input problem: reported as "frontpack: error: ..." with exit code 2.
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Applies -o/--format/--seed to the scene and checks every output folder exists before any
+/// work is done, so a bad path costs nothing and creates nothing.
+void apply_overrides(Scene& scene, const PackCommandOptions& o) {
+  if (o.seed) scene.seed = *o.seed;
+  if (!o.format.empty() && o.output_path.empty()) throw InputError("--format needs -o PATH");
+  if (!o.output_path.empty()) {
+    OutputSpec out;
+    out.path = o.output_path;
+    try {
+      out.format = output_format_name(o.format.empty() ? format_from_extension(o.output_path)
+                                                       : parse_output_format(o.format));
+    } catch (const std::invalid_argument& e) {
+      throw InputError(e.what());
+    }
+    scene.outputs = {out};
+  }
+  std::vector<std::string> paths;
+  for (const OutputSpec& out : scene.outputs) paths.push_back(out.path);
+  if (!o.record_path.empty()) paths.push_back(o.record_path);
+  for (const std::string& p : paths) {
+    const std::filesystem::path parent = std::filesystem::path(p).parent_path();
+    if (!parent.empty() && !std::filesystem::is_directory(parent))
+      throw InputError("output folder '" + parent.string() + "' does not exist (for output '" + p + "')");
+    if (std::filesystem::is_directory(p)) throw InputError("output path '" + p + "' is a folder");
+  }
+}
+
+class ProgressLine {
+ public:
+  explicit ProgressLine(bool on) : on_(on) {}
+  void operator()(std::uint64_t n, double t, double vf) {
+    std::fprintf(stderr, "\r  packed %12llu   %10.0f /s   VF %.4f   %6.1f s ", static_cast<unsigned long long>(n),
+                 t > 0 ? static_cast<double>(n) / t : 0.0, vf, t);
+    std::fflush(stderr);
+    shown_ = true;
+  }
+  void finish() {
+    if (shown_) std::fprintf(stderr, "\n");
+  }
+  bool on() const { return on_; }
+
+ private:
+  bool on_;
+  bool shown_ = false;
+};
+
+template <int D>
+const Container<D>& container_of(const Scene& s) {
+  if constexpr (D == 2) return *s.container2;
+  else return *s.container3;
+}
+
+template <int D>
+int run(const Scene& scene, const PackCommandOptions& o) {
+  const Container<D>& container = container_of<D>(scene);
+  ProgressLine progress(o.progress);
+  ProgressFn progress_fn;
+  if (progress.on()) progress_fn = [&](std::uint64_t n, double t, double vf) { progress(n, t, vf); };
+
+  PackResult<D> res = pack<D>(scene, progress_fn);
+  progress.finish();
+  const Packing<D>& P = res.packing;
+
+  // Metrics, from core/metrics (the same code `analyze` uses), and the independent validation.
+  const auto t_metrics = Clock::now();
+  const double vf_box = vf_container<D>(P, container.measure());
+  const Vec<D> ref_center = container.interior_point();
+  const double ref_radius = -container.signed_distance(ref_center);
+  const double vf_ref = vf_reference_sphere<D>(P, ref_center, ref_radius);
+  const double tol = scene.packer.contact_tolerance;
+  const ContactStats cs = contact_stats<D>(P, &container, tol);
+  const ValidationReport vr = validate_packing<D>(P, container, scene.radii.get(), tol);
+  const double metrics_seconds = since(t_metrics);
+
+  RunRecord rec;
+  rec.version = kVersion;
+  rec.scene_path = scene.source_path;
+  rec.scene_text = scene.source_text;
+  rec.seed = scene.seed;
+  rec.dimension = D;
+  rec.n = P.size();
+  rec.container_description = container.describe();
+  rec.distribution_description = scene.radii->describe();
+  {
+    const Aabb<D> b = container.bounds();
+    Aabb<3> b3;
+    b3.lo.setZero();
+    b3.hi.setZero();
+    b3.lo.template head<D>() = b.lo;
+    b3.hi.template head<D>() = b.hi;
+    rec.bounds = b3;
+  }
+  rec.timings = {{"pack", res.seconds}, {"metrics", metrics_seconds}};
+  rec.metrics = {{"volume_fraction_container", vf_box},
+                 {"volume_fraction_reference_sphere", vf_ref},
+                 {"reference_sphere_radius", ref_radius},
+                 {"contact_tolerance", tol},
+                 {"mean_coordination", cs.mean_coordination},
+                 {"mean_coordination_with_walls", cs.mean_coordination_with_walls},
+                 {"rattler_fraction", P.empty() ? 0.0 : static_cast<double>(cs.rattlers) / P.size()},
+                 {"max_overlap_over_rmin", vr.max_overlap_rel},
+                 {"max_outside_over_r", vr.max_outside_rel},
+                 {"radii_ks_statistic", vr.radii_ks_statistic},
+                 {"radii_ks_pvalue", vr.radii_ks_pvalue},
+                 {"particles_per_second", res.seconds > 0 ? P.size() / res.seconds : 0.0}};
+  const FrontCounters& c = res.counters;
+  rec.counters = {{"front_picks", c.front_picks},         {"front_removals", c.front_removals},
+                  {"pairs_considered", c.pairs_considered}, {"pairs_pruned", c.pairs_pruned},
+                  {"solves", c.solves},                   {"candidates", c.candidates},
+                  {"rejected_overlap", c.rejected_overlap}, {"rejected_container", c.rejected_container},
+                  {"wall_bodies", c.wall_bodies},         {"radii_drawn", c.radii_drawn},
+                  {"radii_unplaced", c.radii_unplaced},   {"max_neighbours", c.max_neighbours},
+                  {"contacts", cs.contacts},              {"wall_contacts", cs.wall_contacts},
+                  {"rattlers", cs.rattlers},              {"grid_bytes", res.grid_bytes}};
+  rec.info = {{"stop_reason", to_string(res.stop)}, {"validation", vr.ok ? "ok" : "FAILED"}};
+
+  const auto t_write = Clock::now();
+  for (const OutputSpec& out : scene.outputs) write_packing<D>(parse_output_format(out.format), out.path, P, rec);
+  if (!o.record_path.empty()) write_run_record(o.record_path, rec);
+  const double write_seconds = since(t_write);
+
+  if (!o.quiet) {
+    std::printf("frontpack %s   scene %s   seed %llu   %dD\n", kVersion, scene.source_path.c_str(),
+                static_cast<unsigned long long>(scene.seed), D);
+    std::printf("  container      %s, %s %.6g\n", container.describe().c_str(), D == 3 ? "volume" : "area",
+                container.measure());
+    std::printf("  radii          %s\n", scene.radii->describe().c_str());
+    std::printf("  particles      %zu   (stop: %s)\n", P.size(), to_string(res.stop));
+    std::printf("  VF container   %.4f   (exact: every particle is inside)\n", vf_box);
+    std::printf("  VF ref sphere  %.4f   (r_ref %.6g at the container's interior point)\n", vf_ref, ref_radius);
+    std::printf("  coordination   %.3f mean, %.3f with walls; %llu contacts, %llu wall contacts, %.1f %% rattlers"
+                "   (contact: |gap| <= %.0e min(ri, rj))\n",
+                cs.mean_coordination, cs.mean_coordination_with_walls, static_cast<unsigned long long>(cs.contacts),
+                static_cast<unsigned long long>(cs.wall_contacts),
+                P.empty() ? 0.0 : 100.0 * static_cast<double>(cs.rattlers) / P.size(), tol);
+    std::printf("  max overlap    %.3g r_min;  max outside %.3g r;  radii K-S p = %.3g\n", vr.max_overlap_rel,
+                vr.max_outside_rel, vr.radii_ks_pvalue);
+    std::printf("  validation     %s\n", vr.ok ? "ok (every pair, every particle against the container, radii range)"
+                                                : vr.summary().c_str());
+    std::printf("  time           pack %.3f s (%.0f particles/s), metrics %.3f s, write %.3f s\n", res.seconds,
+                res.seconds > 0 ? P.size() / res.seconds : 0.0, metrics_seconds, write_seconds);
+    for (const OutputSpec& out : scene.outputs) std::printf("  output         %s (%s)\n", out.path.c_str(), out.format.c_str());
+    if (!o.record_path.empty()) std::printf("  run record     %s\n", o.record_path.c_str());
+  }
+  if (!vr.ok) {
+    std::fprintf(stderr, "frontpack: error: the packing failed validation:\n%s\n", vr.summary().c_str());
+    return 3;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int run_pack_command(const PackCommandOptions& o) {
+  Scene scene;
+  try {
+    scene = load_scene(o.scene_path);
+    apply_overrides(scene, o);
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
+    return 2;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
+    return 2;
+  }
+  try {
+    return scene.dimension == 2 ? run<2>(scene, o) : run<3>(scene, o);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace fp

@@ -1,0 +1,23 @@
+#pragma once
+// `frontpack pack`: scene -> packing -> metrics -> validation -> outputs -> summary.
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace fp {
+
+struct PackCommandOptions {
+  std::string scene_path;
+  std::string output_path;             ///< -o: replaces the scene's outputs
+  std::string format;                  ///< --format for -o
+  std::string record_path;             ///< --record: JSON run record without particles
+  std::optional<std::uint64_t> seed;   ///< --seed
+  bool quiet = false;
+  bool progress = false;               ///< progress line on stderr
+  bool force_progress = false;
+};
+
+/// Runs the command; returns the process exit code (0, 1, 2 or 3, see main.cpp).
+int run_pack_command(const PackCommandOptions& options);
+
+}  // namespace fp

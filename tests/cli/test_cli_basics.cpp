@@ -1,0 +1,120 @@
+// `frontpack` as a user meets it: --version, --help, usage errors, the summary on stdout and a
+// silent stderr when it is not a terminal.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "cli_test_util.hpp"
+#include "frontpack/version.hpp"
+
+namespace fptest {
+namespace {
+
+const char* kSmallScene = R"(dimension: 3
+seed: 1
+container: {type: box, min: [0, 0, 0], max: [0.15, 0.15, 0.15]}
+particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
+)";
+
+TEST(CliBasics, VersionExitsZero) {
+  TempDir dir;
+  const RunResult r = run_frontpack(dir, "--version");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find(std::string("frontpack ") + fp::kVersion), std::string::npos) << r.out;
+}
+
+TEST(CliBasics, HelpExitsZeroAndListsPack) {
+  TempDir dir;
+  for (const char* args : {"--help", "-h"}) {
+    const RunResult r = run_frontpack(dir, args);
+    EXPECT_EQ(r.exit_code, 0) << args << ": " << r.err;
+    EXPECT_NE(r.out.find("pack"), std::string::npos) << args << ": " << r.out;
+  }
+  const RunResult r = run_frontpack(dir, "pack --help");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  for (const char* option : {"--seed", "--format", "--output", "--record", "--quiet", "--progress"})
+    EXPECT_NE(r.out.find(option), std::string::npos) << option << " not in: " << r.out;
+}
+
+TEST(CliBasics, UsageErrorsExitTwo) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", kSmallScene);
+  for (const char* args : {"", "bogus", "bogus s.yaml", "pack", "pack s.yaml --bogus", "pack s.yaml --seed abc",
+                           "pack s.yaml --format csv", "pack s.yaml extra.yaml"}) {
+    const RunResult r = run_frontpack(dir, args);
+    EXPECT_EQ(r.exit_code, 2) << "frontpack " << args << "\nstderr: " << r.err;
+    EXPECT_FALSE(r.err.empty()) << "frontpack " << args << ": no message";
+  }
+  // Nothing was written by any of them.
+  EXPECT_EQ(listing(dir.work()), (std::set<std::string>{"s.yaml"}));
+}
+
+TEST(CliBasics, NegativeSeedIsRefused) {
+  // A seed is an unsigned 64-bit integer; -1 must not silently become 2^64 - 1.
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", kSmallScene);
+  const RunResult r = run_frontpack(dir, "pack s.yaml --seed -1 -o out.csv");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_FALSE(fs::exists(dir.work() / "out.csv"));
+}
+
+TEST(CliBasics, SummaryOnStdoutNothingOnStderr) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", kSmallScene);
+  const RunResult r = run_frontpack(dir, "pack s.yaml --seed 5 -o out.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "") << "stderr is not a terminal: no progress line, no message";
+
+  // The particle count printed is the number of rows written.
+  const auto rows = lines_of(read_bytes(dir.work() / "out.csv"));
+  ASSERT_GE(rows.size(), 2u);
+  const std::size_t n = rows.size() - 1;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(particles\s+(\d+))"))) << r.out;
+  EXPECT_EQ(std::stoul(m[1]), n);
+  EXPECT_NE(r.out.find("seed 5"), std::string::npos);
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(VF container\s+0\.\d{4})"))) << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(coordination\s+\d+\.\d+ mean)"))) << r.out;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(max overlap\s+(\S+) r_min)"))) << r.out;
+  EXPECT_LE(std::stod(m[1]), 1e-9);
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(time\s+pack \d+\.\d+ s)"))) << r.out;
+  EXPECT_NE(r.out.find("out.csv"), std::string::npos);
+}
+
+TEST(CliBasics, QuietPrintsNothing) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", kSmallScene);
+  const RunResult r = run_frontpack(dir, "pack s.yaml -q -o out.csv");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "");
+  EXPECT_TRUE(fs::exists(dir.work() / "out.csv"));
+}
+
+TEST(CliBasics, ProgressFlagWritesToStderrOnly) {
+  // --progress forces the progress line even into a file; it appears every 0.5 s, and the
+  // time limit keeps the run at 0.8 s.
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", R"(dimension: 3
+container: {type: box, min: [0, 0, 0], max: [3, 3, 3]}
+particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
+stop: {time: 0.8}
+)");
+  const RunResult r = run_frontpack(dir, "pack s.yaml --progress -o out.csv");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("packed"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("packed "), std::string::npos);
+}
+
+TEST(CliBasics, RunRecordIsWritten) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", kSmallScene);
+  const RunResult r = run_frontpack(dir, "pack s.yaml -q -o out.csv --record rec.json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string py = "import json,sys; d=json.load(open(sys.argv[1])); "
+                         "assert d['seed'] == 1 and d['n'] > 0 and 'particles' not in d, d.keys()";
+  EXPECT_EQ(std::system(("/usr/bin/python3 -c " + quoted(py) + " " + quoted((dir.work() / "rec.json").string())).c_str()), 0);
+}
+
+}  // namespace
+}  // namespace fptest
