@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs the Debian packages frontpack needs, only those missing (run as root).
+#   scripts/install-deps.sh          what `frontpack pack` needs to build
+#   scripts/install-deps.sh --test   plus GoogleTest, Google Benchmark and the Python modules the tests use
+set -euo pipefail
+packages=(build-essential cmake libeigen3-dev libcgal-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev)
+if [[ "${1:-}" == "--test" ]]; then
+  # python3-vtk9: the VTU files are read back by VTK itself; numpy: independent cross-checks.
+  packages+=(libgtest-dev libgmock-dev libbenchmark-dev python3 python3-numpy python3-vtk9)
+fi
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "installing: ${missing[*]}"
+  if [[ $(id -u) -ne 0 ]]; then SUDO=sudo; else SUDO=; fi
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
