@@ -14,6 +14,7 @@
 //  * which s0 (random as the paper, FIFO, or closest to the seed point: compact growth);
 //  * pair order (index, or nearest neighbours first) and which candidate to keep (the first
 //    found, or the one closest to the seed point over all pairs);
+//  * which neighbours serve as contact bodies: all of V (paper) or only those still in F;
 //  * a pool of radii drawn ahead: a radius that does not fit at s0 waits while the others are
 //    tried; every drawn radius is placed except the pool's last few, so the size distribution
 //    is not distorted (no radius is ever shrunk or discarded to make it fit).
@@ -131,14 +132,21 @@ class AdvancingFront {
     return -1;
   }
   void front_pop() {
-    if (opt_.front_pick == FrontPick::ClosestToSeed) heap_.pop();
-    else ++fifo_head_;
+    if (opt_.front_pick == FrontPick::ClosestToSeed) {
+      in_front_[heap_.top().id] = 0;
+      heap_.pop();
+    } else {
+      in_front_[list_[fifo_head_]] = 0;
+      ++fifo_head_;
+    }
     if (fifo_head_ > 4096 && fifo_head_ * 2 > list_.size()) {  // keep the list compact
       list_.erase(list_.begin(), list_.begin() + static_cast<std::ptrdiff_t>(fifo_head_));
       fifo_head_ = 0;
     }
   }
   void front_push(int id, const Vec<D>& c) {
+    if (in_front_.size() <= static_cast<std::size_t>(id)) in_front_.resize(static_cast<std::size_t>(id) + 1, 0);
+    in_front_[id] = 1;
     if (opt_.front_pick == FrontPick::ClosestToSeed) heap_.push({(c - seed_point_).squaredNorm(), id});
     else list_.push_back(id);
   }
@@ -264,15 +272,9 @@ class AdvancingFront {
   /// V = particles within r0 + r_s + 2r of c0 (paper's definition), plus walls within 2r.
   void gather_neighbours(int s0, const Vec<D>& c0, double r0, double r, const Packing<D>& P, PackResult<D>& res) {
     nb_.clear();
-    grid_.for_each_near(c0, r0 + 2 * r, [&](int id) {
-      if (id == s0) return;
-      const Vec<D> d = P.centers[id] - c0;
-      const double reach = r0 + P.radii[id] + 2 * r;
-      const double d2 = d.squaredNorm();
-      if (d2 <= reach * reach) {
-        // gap to s0: nearest-first order, and the candidate overlap test stops earliest this way
-        nb_.push_back({std::sqrt(d2) - r0 - P.radii[id], id});
-      }
+    // gap to s0: nearest-first order, and the candidate overlap test stops earliest this way
+    grid_.for_each_within(c0, r0 + 2 * r, [&](int id, const Vec<D>&, double rk, double d2) {
+      if (id != s0) nb_.push_back({std::sqrt(d2) - r0 - rk, id});
     });
     if (opt_.pair_order == PairOrder::NearestFirst)
       std::sort(nb_.begin(), nb_.end(), [](const Neighbour& a, const Neighbour& b) { return a.gap < b.gap || (a.gap == b.gap && a.id < b.id); });
@@ -292,7 +294,11 @@ class AdvancingFront {
     // Pair enumeration: walls first (few, and they close the boundary gap), then V nearest first.
     bodies_.clear();
     for (const Wall<D>& w : walls_) bodies_.push_back(Body<D>::of_wall(w));
-    for (const Neighbour& n : nb_) bodies_.push_back(Body<D>::sphere(P.centers[n.id], P.radii[n.id], n.id));
+    // A closed particle (no longer in F) rarely has room left next to it: skipping it as a contact
+    // body (it stays an obstacle in nb_) removes most pairs (experiments/front-levers).
+    const bool front_only = opt_.contact_bodies == ContactBodies::Front;
+    for (const Neighbour& n : nb_)
+      if (!front_only || in_front_[n.id]) bodies_.push_back(Body<D>::sphere(P.centers[n.id], P.radii[n.id], n.id));
     last_blocker_ = 0;
   }
 
@@ -408,6 +414,7 @@ class AdvancingFront {
   std::vector<Vec<D>> nb_c_;   // V's centres and radii, contiguous for the overlap test
   std::vector<double> nb_r_;
   int last_blocker_ = 0;
+  std::vector<char> in_front_;  // per particle: still in F
   typename Solver::Session session_;
 };
 

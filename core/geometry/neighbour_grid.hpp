@@ -3,8 +3,9 @@
 // distributions (r_max / r_min above a threshold) a hierarchy of such grids, one per octave of
 // radius, so that a query touches O(1) cells and O(1) particles whatever the radius ratio
 // (the O(n) argument of paper 002, Sect. 6, needs the neighbour search to be O(1)).
-// Cells hold singly linked lists (head per cell, next per particle): 4 bytes per cell and per
-// particle, no allocation after construction except when the particle arrays grow.
+// Cells hold singly linked lists (head per cell, next per particle). Each list item carries a
+// copy of its particle's centre and radius, so a query reads one cache line per particle rather
+// than chasing ids into the packing's arrays (the query dominated at 10^6 particles).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -57,10 +58,10 @@ class NeighbourGrid {
   double cell_size(int level) const { return levels_[level].cell; }
 
   void insert(int id, const Vec<D>& c, double r) {
-    if (static_cast<std::size_t>(id) >= next_.size()) next_.resize(std::max<std::size_t>(id + 1, next_.size() * 2), -1);
+    if (static_cast<std::size_t>(id) >= items_.size()) items_.resize(std::max<std::size_t>(id + 1, items_.size() * 2));
     Level& L = levels_[level_of(r)];
     std::int64_t k = flat_index(L, c);
-    next_[id] = L.head[k];
+    items_[id] = Item{c, r, L.head[k]};
     L.head[k] = id;
   }
 
@@ -69,6 +70,36 @@ class NeighbourGrid {
   /// A superset; the caller filters with exact distances.
   template <class F>
   void for_each_near(const Vec<D>& c, double reach, F&& f) const {
+    for_each_item_near(c, reach, [&](int id, const Item&) { f(id); });
+  }
+
+  /// Calls f(id, c_k, r_k, d2) for exactly the inserted particles with |c - c_k| <= reach + r_k,
+  /// d2 = |c - c_k|^2.
+  template <class F>
+  void for_each_within(const Vec<D>& c, double reach, F&& f) const {
+    for_each_item_near(c, reach, [&](int id, const Item& it) {
+      const double d2 = (it.c - c).squaredNorm();
+      const double lim = reach + it.r;
+      if (d2 <= lim * lim) f(id, it.c, it.r, d2);
+    });
+  }
+
+  /// Memory held by the grid, in bytes (for the run record).
+  std::size_t memory_bytes() const {
+    std::size_t b = items_.capacity() * sizeof(Item);
+    for (const Level& L : levels_) b += L.head.capacity() * sizeof(int);
+    return b;
+  }
+
+ private:
+  struct Item {
+    Vec<D> c;
+    double r = 0;
+    int next = -1;
+  };
+
+  template <class F>
+  void for_each_item_near(const Vec<D>& c, double reach, F&& f) const {
     for (const Level& L : levels_) {
       const double half = reach + L.r_top;
       std::int64_t lo[D], hi[D];
@@ -79,26 +110,18 @@ class NeighbourGrid {
       if constexpr (D == 2) {
         for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
           for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
-            for (int id = L.head[x + L.dims[0] * y]; id >= 0; id = next_[id]) f(id);
+            for (int id = L.head[x + L.dims[0] * y]; id >= 0; id = items_[id].next) f(id, items_[id]);
       } else {
         for (std::int64_t z = lo[2]; z <= hi[2]; ++z)
           for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
             const std::int64_t row = L.dims[0] * (y + L.dims[1] * z);
             for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
-              for (int id = L.head[x + row]; id >= 0; id = next_[id]) f(id);
+              for (int id = L.head[x + row]; id >= 0; id = items_[id].next) f(id, items_[id]);
           }
       }
     }
   }
 
-  /// Memory held by the grid, in bytes (for the run record).
-  std::size_t memory_bytes() const {
-    std::size_t b = next_.capacity() * sizeof(int);
-    for (const Level& L : levels_) b += L.head.capacity() * sizeof(int);
-    return b;
-  }
-
- private:
   struct Level {
     double r_top = 0, cell = 0, inv_cell = 0;
     Vec<D> lo;
@@ -128,7 +151,7 @@ class NeighbourGrid {
   }
 
   std::vector<Level> levels_;
-  std::vector<int> next_;
+  std::vector<Item> items_;  // by particle id
 };
 
 }  // namespace fp

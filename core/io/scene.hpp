@@ -17,12 +17,16 @@ enum class FrontPick { Random, Fifo, ClosestToSeed };
 enum class CandidateChoice { First, ClosestToSeed };
 /// Order of the neighbour pairs (si, sj) tried around s0.
 enum class PairOrder { Index, NearestFirst };
+/// Which neighbours of s0 a new particle may be placed tangent to: all of V (paper 002), or only
+/// those still in the front F. A closed particle is still an obstacle in both cases.
+enum class ContactBodies { All, Front };
 
 struct PackerOptions {
   std::string method = "front";              ///< the advancing front (the only method of this issue)
   FrontPick front_pick = FrontPick::ClosestToSeed;
   CandidateChoice candidate = CandidateChoice::ClosestToSeed;
   PairOrder pair_order = PairOrder::NearestFirst;
+  ContactBodies contact_bodies = ContactBodies::Front;  ///< pairs among front particles only: ~4x fewer solves
   bool walls_as_bodies = true;               ///< particles may touch container walls (closes the boundary gap)
   int radius_pool = 1;                       ///< radii drawn ahead; a radius that does not fit waits, others are tried (1 = paper)
   double contact_tolerance = 1e-9;           ///< relative: a contact is |gap| <= tol * min(ri, rj)
