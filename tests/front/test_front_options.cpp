@@ -1,6 +1,6 @@
 // Every combination of the packer's levers (front pick, candidate choice, pair order, walls as
-// bodies, radius pool) still gives a valid packing: no overlap, every particle inside, the
-// front run to exhaustion. 48 combinations, in a 3D box and a non-convex 2D polygon.
+// bodies, radius pool, contact bodies) still gives a valid packing: no overlap, every particle
+// inside, the front run to exhaustion. 96 combinations, in a 3D box and a non-convex 2D polygon.
 #include <gtest/gtest.h>
 
 #include "front_checks.hpp"
@@ -8,12 +8,13 @@
 namespace fptest {
 namespace {
 
-using Options = std::tuple<std::string, std::string, std::string, bool, int>;
+using Options = std::tuple<std::string, std::string, std::string, bool, int, std::string>;
 
 std::string packer_yaml(const Options& o) {
-  const auto& [front, candidate, pair_order, walls, pool] = o;
+  const auto& [front, candidate, pair_order, walls, pool, bodies] = o;
   return "packer: {front: " + front + ", candidate: " + candidate + ", pair_order: " + pair_order +
-         ", walls: " + (walls ? "true" : "false") + ", radius_pool: " + std::to_string(pool) + "}\n";
+         ", walls: " + (walls ? "true" : "false") + ", radius_pool: " + std::to_string(pool) +
+         ", contact_bodies: " + bodies + "}\n";
 }
 
 class FrontOptions : public ::testing::TestWithParam<Options> {};
@@ -54,11 +55,12 @@ INSTANTIATE_TEST_SUITE_P(AllCombinations, FrontOptions,
                          ::testing::Combine(::testing::Values(std::string("closest"), std::string("random"), std::string("fifo")),
                                             ::testing::Values(std::string("closest"), std::string("first")),
                                             ::testing::Values(std::string("nearest"), std::string("index")), ::testing::Bool(),
-                                            ::testing::Values(1, 4)),
+                                            ::testing::Values(1, 4), ::testing::Values(std::string("front"), std::string("all"))),
                          [](const auto& info) {
                            const Options& o = info.param;
                            return "front_" + std::get<0>(o) + "_cand_" + std::get<1>(o) + "_pairs_" + std::get<2>(o) +
-                                  (std::get<3>(o) ? "_walls" : "_nowalls") + "_pool" + std::to_string(std::get<4>(o));
+                                  (std::get<3>(o) ? "_walls" : "_nowalls") + "_pool" + std::to_string(std::get<4>(o)) + "_bodies_" +
+                                  std::get<5>(o);
                          });
 
 }  // namespace

@@ -264,13 +264,14 @@ TEST(SceneYaml, EveryDistributionKind) {
 
 TEST(SceneYaml, PackerEnumsAndOutputsMapToOptions) {
   const Scene s = parse_scene(kRect2 +
-                                  "packer: {front: fifo, candidate: closest, pair_order: nearest, walls: yes, seed_point: [0.25, 0.75]}\n"
+                                  "packer: {front: fifo, candidate: closest, pair_order: nearest, contact_bodies: all, walls: yes, seed_point: [0.25, 0.75]}\n"
                                   "stop: {particles: 2.5e3, time: 0.5}\n"
                                   "output:\n  - path: x.VTU\n  - {path: y.txt, format: LAMMPS}\n",
                               "p.yaml");
   EXPECT_EQ(s.packer.front_pick, FrontPick::Fifo);
   EXPECT_EQ(s.packer.candidate, CandidateChoice::ClosestToSeed);
   EXPECT_EQ(s.packer.pair_order, PairOrder::NearestFirst);
+  EXPECT_EQ(s.packer.contact_bodies, ContactBodies::All);
   EXPECT_TRUE(s.packer.walls_as_bodies);
   EXPECT_EQ(*s.packer.seed_point, (std::vector<double>{0.25, 0.75}));
   EXPECT_EQ(s.stop.max_particles, 2500u);
@@ -408,6 +409,7 @@ TEST(SceneYamlErrors, BadEnumValuesListTheAllowedOnes) {
   expect_error(kBox3 + "packer: {front: closets}\n", 5, "packer.front", {"did you mean 'closest'", "closest, random, fifo"});
   expect_error(kBox3 + "packer: {candidate: any}\n", 5, "packer.candidate", {"closest, first"});
   expect_error(kBox3 + "packer: {pair_order: random}\n", 5, "packer.pair_order", {"nearest, index"});
+  expect_error(kBox3 + "packer: {contact_bodies: some}\n", 5, "packer.contact_bodies", {"front, all"});
   expect_error(kBox3 + "packer: {method: mesh}\n", 5, "packer.method", {"front"});
   expect_error(kBox3 + "output:\n  - {format: vtk, path: a.vtk}\n", 6, "output[0].format", {"vtu, yade, lammps, csv, json"});
   expect_error(kBox3 + "output:\n  - {path: a.xyz}\n", 6, "output[0].path", {"extension", "format"});
