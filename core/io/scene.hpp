@@ -28,7 +28,7 @@ struct PackerOptions {
   PairOrder pair_order = PairOrder::NearestFirst;
   ContactBodies contact_bodies = ContactBodies::Front;  ///< pairs among front particles only: ~4x fewer solves
   bool walls_as_bodies = true;               ///< particles may touch container walls (closes the boundary gap)
-  int radius_pool = 1;                       ///< radii drawn ahead; a radius that does not fit waits, others are tried (1 = paper)
+  int radius_pool = 4;                       ///< radii drawn ahead; a radius that does not fit waits, others are tried (1 = paper)
   double contact_tolerance = 1e-9;           ///< relative: a contact is |gap| <= tol * min(ri, rj)
   double grid_cell_factor = 2.0;             ///< grid cell size = factor * r_max of its level
   double hierarchical_grid_ratio = 4.0;      ///< use the hierarchical grid when r_max / r_min exceeds this

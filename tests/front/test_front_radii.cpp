@@ -67,7 +67,7 @@ TEST_P(FrontRadii, PackedRadiiFollowTheDistribution) {
 
 INSTANTIATE_TEST_SUITE_P(AllDistributions, FrontRadii,
                          ::testing::Combine(::testing::ValuesIn(kCases), ::testing::Values(3, 2),
-                                            ::testing::Values(0, 4)),  // 0: the default pool
+                                            ::testing::Values(0, 1, 16)),  // 0: the default pool; 1: the paper
                          [](const auto& info) {
                            return std::get<0>(info.param).name + "_" + std::to_string(std::get<1>(info.param)) +
                                   "D_pool" + (std::get<2>(info.param) ? std::to_string(std::get<2>(info.param)) : "Default");

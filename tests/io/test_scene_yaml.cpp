@@ -70,7 +70,7 @@ TEST(SceneYaml, MinimalSceneUsesDefaults) {
   const PackerOptions defaults;
   EXPECT_EQ(s.packer.front_pick, defaults.front_pick);
   EXPECT_EQ(s.packer.candidate, defaults.candidate);
-  EXPECT_EQ(s.packer.radius_pool, 1);
+  EXPECT_EQ(s.packer.radius_pool, 4);  // measured default (experiments/front-levers)
   EXPECT_FALSE(s.packer.seed_point);
   EXPECT_FALSE(s.stop.max_particles);
   EXPECT_FALSE(s.stop.target_volume_fraction);
