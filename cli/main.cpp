@@ -36,6 +36,11 @@ int main(int argc, char** argv) {
   pack_cmd->add_flag("-q,--quiet", pack.quiet, "no summary on stdout");
   pack_cmd->add_flag("--progress", pack.force_progress, "progress line on stderr even when it is not a terminal");
 
+  // CLI11 would answer "A subcommand is required" to a mistyped command.
+  if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != "pack") {
+    std::cerr << "frontpack: error: unknown command '" << argv[1] << "' (commands: pack; see frontpack --help)\n";
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

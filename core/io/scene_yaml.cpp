@@ -637,8 +637,11 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
 }
 
 Scene load_scene(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw SceneError(path, 0, 0, "", "is a folder; give the scene file (YAML) itself, e.g. scenes/demo.yaml");
   std::ifstream in(path, std::ios::binary);
-  if (!in || std::filesystem::is_directory(path)) {
+  if (!in) {
     const int err = errno;
     throw SceneError(path, 0, 0, "", std::string("cannot read the scene file") + (err ? std::string(": ") + std::strerror(err) : ""));
   }

@@ -47,6 +47,10 @@ TEST(CliBasics, UsageErrorsExitTwo) {
   }
   // Nothing was written by any of them.
   EXPECT_EQ(listing(dir.work()), (std::set<std::string>{"s.yaml"}));
+  // A mistyped command is named, with the list of commands.
+  const RunResult r = run_frontpack(dir, "pakc s.yaml");
+  EXPECT_NE(r.err.find("unknown command 'pakc'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("pack"), std::string::npos) << r.err;
 }
 
 TEST(CliBasics, NegativeSeedIsRefused) {

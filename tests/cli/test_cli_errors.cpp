@@ -133,6 +133,7 @@ TEST(CliBadInput, SceneIsAFolder) {
   const RunResult r = run_frontpack(dir, "pack folder.yaml -o out.csv");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("folder.yaml"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("is a folder"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir.work() / "out.csv"));
 }
 
