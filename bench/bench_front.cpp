@@ -35,11 +35,20 @@ void BM_Front3D_ClosestNoPool(benchmark::State& s) {
   o.radius_pool = 1;
   run_front<3>(s, o, 0.5, 0.01, 0.02);
 }
+void BM_Front3D_AllContactBodies(benchmark::State& s) {
+  PackerOptions o;
+  o.contact_bodies = ContactBodies::All;
+  run_front<3>(s, o, 0.5, 0.01, 0.02);
+}
+// r_max / r_min = 50: the hierarchical grid's regime.
+void BM_Front3D_Ratio50(benchmark::State& s) { run_front<3>(s, PackerOptions{}, 1.0, 0.002, 0.1); }
 void BM_Front2D_Defaults(benchmark::State& s) { run_front<2>(s, PackerOptions{}, 0.5, 0.001, 0.002); }
 
 BENCHMARK(BM_Front3D_Defaults)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Front3D_PaperRandomFirst)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Front3D_ClosestNoPool)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Front3D_AllContactBodies)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Front3D_Ratio50)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Front2D_Defaults)->Unit(benchmark::kMillisecond);
 
 }  // namespace
