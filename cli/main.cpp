@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli/pack_command.hpp"
+#include "cli/validate_command.hpp"
 #include "frontpack/version.hpp"
 
 int main(int argc, char** argv) {
@@ -37,16 +38,30 @@ int main(int argc, char** argv) {
   pack_cmd->add_flag("--progress", pack.force_progress, "progress line on stderr even when it is not a terminal");
 
   // CLI11 would answer "A subcommand is required" to a mistyped command.
-  if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != "pack") {
-    std::cerr << "frontpack: error: unknown command '" << argv[1] << "' (commands: pack; see frontpack --help)\n";
+  if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != "pack" && std::string(argv[1]) != "validate") {
+    std::cerr << "frontpack: error: unknown command '" << argv[1] << "' (commands: pack, validate; see frontpack --help)\n";
     return 2;
   }
+  fp::ValidateCommandOptions check;
+  CLI::App* validate_cmd = app.add_subcommand(
+      "validate", "check a packing file against its scene: no overlap, every particle inside, the radii");
+  validate_cmd->add_option("packing", check.packing_path, "packing file (vtu, yade, lammps, csv or json)")->required();
+  validate_cmd->add_option("--scene", check.scene_path, "the scene the packing fills")->required();
+  validate_cmd->add_option("--format", check.format, "format of PACKING (default: from its extension)");
+  validate_cmd->add_option("--tolerance", check.tolerance,
+                           "overlap allowed, relative to r_min (default: the scene's contact_tolerance)")
+      ->check(CLI::NonNegativeNumber);
+  validate_cmd->add_option("--ks-alpha", check.ks_alpha, "the radii fail when their K-S p-value is below this")
+      ->check(CLI::Range(0.0, 1.0));
+  validate_cmd->add_flag("-q,--quiet", check.quiet, "no report; the exit code only");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);  // prints help/version or the usage error
     return (code == 0) ? 0 : 2;
   }
+  if (validate_cmd->parsed()) return fp::run_validate_command(check);
   if (pack_cmd->parsed()) {
     pack.progress = pack.force_progress || isatty(fileno(stderr));
     return fp::run_pack_command(pack);

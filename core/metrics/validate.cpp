@@ -43,7 +43,9 @@ class WorstIssues {
   std::vector<ValidationIssue> heap_;
 };
 
-std::string format_issue(const ValidationIssue& w) {
+}  // namespace
+
+std::string describe(const ValidationIssue& w) {
   char buf[160];
   if (w.j >= 0)
     std::snprintf(buf, sizeof buf, "%s %lld-%lld: %.3g", w.kind.c_str(), static_cast<long long>(w.i),
@@ -52,8 +54,6 @@ std::string format_issue(const ValidationIssue& w) {
     std::snprintf(buf, sizeof buf, "%s %lld: %.3g", w.kind.c_str(), static_cast<long long>(w.i), w.value_rel);
   return buf;
 }
-
-}  // namespace
 
 std::string ValidationReport::summary() const {
   char buf[512];
@@ -69,7 +69,7 @@ std::string ValidationReport::summary() const {
                   static_cast<unsigned long long>(radius_count), static_cast<unsigned long long>(non_finite_count));
     s += buf;
     s += "\n  worst:";
-    for (std::size_t k = 0; k < worst.size() && k < 5; ++k) s += (k ? ", " : " ") + format_issue(worst[k]);
+    for (std::size_t k = 0; k < worst.size() && k < 5; ++k) s += (k ? ", " : " ") + describe(worst[k]);
   }
   if (std::isnan(radii_ks_statistic)) {
     s += "\n  radii K-S: no distribution given";

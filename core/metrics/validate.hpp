@@ -46,6 +46,9 @@ struct ValidationReport {
 /// + r > overlap_tol_rel * r; with a distribution, radii outside [dist.r_min, dist.r_max] (1e-12
 /// relative slack) are issues; without one, only r <= 0 is. Throws std::invalid_argument unless
 /// overlap_tol_rel >= 0.
+/// One line: "overlap 12-40: 3.1e-08" (kind, ids, value relative to r_min or r).
+std::string describe(const ValidationIssue& issue);
+
 template <int D>
 ValidationReport validate_packing(const Packing<D>& packing, const Container<D>& container,
                                   const RadiusDistribution* dist_or_null, double overlap_tol_rel = 1e-9);

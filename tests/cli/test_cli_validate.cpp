@@ -1,0 +1,131 @@
+// `frontpack validate`: a packing written by `pack` passes in every format; planted defects (an
+// overlap of 1e-8 r_min, a particle 1e-8 r outside the container, a radius out of range, a
+// distorted size distribution) fail with exit 3 and the offender's id; bad input exits 2.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "cli_test_util.hpp"
+
+namespace fptest {
+namespace {
+
+const char* kScene = R"(dimension: 3
+seed: 4
+container: {type: box, min: [0, 0, 0], max: [0.2, 0.2, 0.2]}
+particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
+)";
+
+struct Row {
+  int id;
+  double x, y, z, r;
+};
+
+std::vector<Row> read_csv(const fs::path& p) {
+  std::vector<Row> rows;
+  const auto lines = lines_of(read_bytes(p));
+  for (std::size_t k = 1; k < lines.size(); ++k) {
+    Row w{};
+    if (std::sscanf(lines[k].c_str(), "%d,%lf,%lf,%lf,%lf", &w.id, &w.x, &w.y, &w.z, &w.r) == 5) rows.push_back(w);
+  }
+  return rows;
+}
+
+void write_csv(const fs::path& p, const std::vector<Row>& rows) {
+  std::string s = "id,x,y,z,r\n";
+  char buf[200];
+  for (const Row& w : rows) {
+    std::snprintf(buf, sizeof buf, "%d,%.17g,%.17g,%.17g,%.17g\n", w.id, w.x, w.y, w.z, w.r);
+    s += buf;
+  }
+  write_bytes(p, s);
+}
+
+class CliValidate : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    write_bytes(dir.work() / "s.yaml", kScene);
+    const RunResult r = run_frontpack(dir, "pack s.yaml -o p.csv -q");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    rows = read_csv(dir.work() / "p.csv");
+    ASSERT_GT(rows.size(), 200u);
+  }
+  RunResult validate(const std::vector<Row>& changed) {
+    write_csv(dir.work() / "q.csv", changed);
+    return run_frontpack(dir, "validate q.csv --scene s.yaml");
+  }
+  TempDir dir;
+  std::vector<Row> rows;
+};
+
+TEST_F(CliValidate, PackedFilesPassInEveryFormat) {
+  for (const char* ext : {"csv", "txt", "data", "vtu", "json"}) {
+    const std::string file = std::string("p.") + ext;
+    ASSERT_EQ(run_frontpack(dir, "pack s.yaml -q -o " + file).exit_code, 0) << file;
+    const RunResult r = run_frontpack(dir, "validate " + file + " --scene s.yaml");
+    EXPECT_EQ(r.exit_code, 0) << file << "\n" << r.out << r.err;
+    EXPECT_NE(r.out.find("result         ok"), std::string::npos) << r.out;
+  }
+}
+
+TEST_F(CliValidate, PlantedOverlapOfOneEMinus8IsCaughtWithItsIds) {
+  // Move particle b towards its nearest neighbour a until they overlap by 1e-8 r_min.
+  std::size_t a = 0, b = 1;
+  double best = 1e300;
+  for (std::size_t j = 1; j < rows.size(); ++j) {
+    const double d = std::hypot(rows[j].x - rows[0].x, rows[j].y - rows[0].y, rows[j].z - rows[0].z) - rows[0].r - rows[j].r;
+    if (d < best) best = d, b = j;
+  }
+  auto changed = rows;
+  const double d = std::hypot(rows[b].x - rows[a].x, rows[b].y - rows[a].y, rows[b].z - rows[a].z);
+  const double target = rows[a].r + rows[b].r - 1e-8 * 0.01;  // r_min of the scene: 0.01
+  const double s = target / d;
+  changed[b].x = rows[a].x + s * (rows[b].x - rows[a].x);
+  changed[b].y = rows[a].y + s * (rows[b].y - rows[a].y);
+  changed[b].z = rows[a].z + s * (rows[b].z - rows[a].z);
+  const RunResult r = validate(changed);
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_NE(r.out.find("overlap " + std::to_string(std::min(a, b)) + "-" + std::to_string(std::max(a, b))),
+            std::string::npos)
+      << r.out;
+}
+
+TEST_F(CliValidate, ParticleOneEMinus8OutsideIsCaught) {
+  auto changed = rows;
+  changed[7].x = changed[7].r * (1.0 - 1e-8);  // protrudes 1e-8 r beyond the wall x = 0
+  const RunResult r = validate(changed);
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_NE(r.out.find("outside 7:"), std::string::npos) << r.out;
+}
+
+TEST_F(CliValidate, RadiusOutOfRangeAndDistortedDistributionFail) {
+  auto big = rows;
+  big[3].r = 0.021;
+  const RunResult r1 = validate(big);
+  EXPECT_EQ(r1.exit_code, 3) << r1.out;
+  EXPECT_NE(r1.out.find("radius_out_of_range 3:"), std::string::npos) << r1.out;
+  // Every radius shrunk to its lower third: no overlap, all inside, all in range, but not U[0.01, 0.02].
+  auto shrunk = rows;
+  for (Row& w : shrunk) w.r = 0.01 + (w.r - 0.01) / 3;
+  const RunResult r2 = validate(shrunk);
+  EXPECT_EQ(r2.exit_code, 3) << r2.out;
+  EXPECT_NE(r2.out.find("K-S"), std::string::npos) << r2.out;
+}
+
+TEST_F(CliValidate, BadInputExitsTwo) {
+  EXPECT_EQ(run_frontpack(dir, "validate missing.csv --scene s.yaml").exit_code, 2);
+  EXPECT_EQ(run_frontpack(dir, "validate p.csv").exit_code, 2);  // --scene is required
+  write_bytes(dir.work() / "s2.yaml", "dimension: 2\ncontainer: {type: rectangle, min: [0, 0], max: [1, 1]}\n"
+                                      "particles: {radius: {distribution: constant, value: 0.1}}\n");
+  const RunResult r = run_frontpack(dir, "validate p.csv --scene s2.yaml");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("3D packing"), std::string::npos) << r.err;
+  write_bytes(dir.work() / "broken.csv", "id,x,y,z,r\n0,0.1,0.1,zero,0.01\n");
+  const RunResult r2 = run_frontpack(dir, "validate broken.csv --scene s.yaml");
+  EXPECT_EQ(r2.exit_code, 2);
+  EXPECT_NE(r2.err.find("broken.csv"), std::string::npos) << r2.err;
+}
+
+}  // namespace
+}  // namespace fptest
