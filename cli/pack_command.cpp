@@ -135,6 +135,8 @@ int run(const Scene& scene, const PackCommandOptions& o) {
                  {"radii_ks_statistic", vr.radii_ks_statistic},
                  {"radii_ks_pvalue", vr.radii_ks_pvalue},
                  {"particles_per_second", res.seconds > 0 ? P.size() / res.seconds : 0.0}};
+  const char* axis_names[] = {"x", "y", "z"};
+  for (int a = 0; a < D; ++a) rec.metrics.emplace_back(std::string("reference_sphere_center_") + axis_names[a], ref_center[a]);
   const FrontCounters& c = res.counters;
   rec.counters = {{"front_picks", c.front_picks},         {"front_removals", c.front_removals},
                   {"pairs_considered", c.pairs_considered}, {"pairs_pruned", c.pairs_pruned},
