@@ -144,6 +144,7 @@ int run(const Scene& scene, const PackCommandOptions& o) {
                   {"rejected_overlap", c.rejected_overlap}, {"rejected_container", c.rejected_container},
                   {"wall_bodies", c.wall_bodies},         {"radii_drawn", c.radii_drawn},
                   {"radii_unplaced", c.radii_unplaced},   {"max_neighbours", c.max_neighbours},
+                  {"voids_reopened", c.voids_reopened},   {"voids_seeded", c.voids_seeded},
                   {"contacts", cs.contacts},              {"wall_contacts", cs.wall_contacts},
                   {"rattlers", cs.rattlers},              {"grid_bytes", res.grid_bytes}};
   rec.info = {{"stop_reason", to_string(res.stop)}, {"validation", vr.ok ? "ok" : "FAILED"}};

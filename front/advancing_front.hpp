@@ -24,6 +24,7 @@
 #include <limits>
 #include <optional>
 #include <queue>
+#include <unordered_set>
 #include <stdexcept>
 #include <vector>
 
@@ -70,7 +71,7 @@ class AdvancingFront {
     std::uint64_t iter = 0;
     double next_progress = 0.5;
     res.stop = StopReason::FrontExhausted;
-    while (!front_empty()) {
+    while (!front_empty() || resume_at_voids(P, res)) {
       if (const auto reached = count_or_fraction_reached(P, res)) { res.stop = *reached; break; }
       if ((++iter & 1023) == 0 && (stop_.time_limit_seconds || progress)) {
         const double t = elapsed();
@@ -158,6 +159,74 @@ class AdvancingFront {
     res.solid_measure += ball_measure<D>(r);
   }
 
+  /// The front ran empty. If the container still has a void (room for a ball of the largest
+  /// pooled radius centred on a lattice point of spacing ~2 r_max, touching nothing), growth
+  /// resumes there: the particles around each void go back into F with their failure memo
+  /// cleared; when no void has new surroundings to reopen, a new initial cluster is started in
+  /// the void closest to the seed point (one at a time: growth from it usually fills the rest).
+  /// Without this a wide size distribution (r_max/r_min = 50: a small s0 sunk between big
+  /// neighbours, pooled radii too small to bridge a gap) or a container with a narrow neck can
+  /// stop with the container nearly empty. Returns false when there is no void: the normal end,
+  /// at the cost of one lattice sweep.
+  bool resume_at_voids(Packing<D>& P, PackResult<D>& res) {
+    const std::size_t k_seed = largest_in_pool();
+    const double r_seed = pool_[k_seed];
+    const Aabb<D> box = container_.bounds();
+    // About 2 r_max between lattice points; coarser for a huge container (at most 2^24 points).
+    double h = 2 * dist_.r_max();
+    std::int64_t dims[D];
+    for (;;) {
+      double points = 1;
+      for (int a = 0; a < D; ++a) {
+        dims[a] = static_cast<std::int64_t>(std::floor(box.size()[a] / h)) + 1;
+        points *= static_cast<double>(dims[a]);
+      }
+      if (points <= double(1 << 24)) break;
+      h *= 1.26;
+    }
+    bool reopened = false, found = false;
+    Vec<D> best;
+    double best_d2 = std::numeric_limits<double>::infinity();
+    std::int64_t idx[D] = {};
+    for (std::int64_t flat = 0;; ++flat) {
+      Vec<D> p;
+      for (int a = 0; a < D; ++a) p[a] = box.lo[a] + 0.5 * (box.size()[a] - (dims[a] - 1) * h) + idx[a] * h;
+      if (container_.contains_ball(p, r_seed, tol_)) {
+        bool empty = true;
+        grid_.for_each_within(p, r_seed, [&](int, const Vec<D>&, double, double) { empty = false; });
+        if (empty) {
+          if (voids_reopened_.insert(flat).second) reopened |= reopen_around(p, 3 * r_seed, P);
+          const double d2 = (p - seed_point_).squaredNorm();
+          if (d2 < best_d2) best_d2 = d2, best = p, found = true;
+        }
+      }
+      int a = 0;
+      while (a < D && ++idx[a] == dims[a]) idx[a++] = 0;
+      if (a == D) break;
+    }
+    if (reopened) {
+      ++res.counters.voids_reopened;
+      return true;
+    }
+    if (!found) return false;
+    start_cluster(P, res, best, k_seed);
+    ++res.counters.voids_seeded;
+    return true;
+  }
+
+  /// Puts the particles within `reach` of p back into F, their failure memo cleared.
+  bool reopen_around(const Vec<D>& p, double reach, const Packing<D>& P) {
+    bool any = false;
+    if (failed_radius_.size() < P.size()) failed_radius_.resize(P.size(), std::numeric_limits<double>::infinity());
+    grid_.for_each_within(p, reach, [&](int id, const Vec<D>& c, double, double) {
+      failed_radius_[id] = std::numeric_limits<double>::infinity();
+      if (in_front_[id]) return;
+      front_push(id, c);
+      any = true;
+    });
+    return any;
+  }
+
   /// The stop criteria that depend only on what has been placed (the time limit is checked in run()).
   std::optional<StopReason> count_or_fraction_reached(const Packing<D>& P, const PackResult<D>& res) const {
     if (stop_.max_particles && P.size() >= *stop_.max_particles) return StopReason::ParticleCount;
@@ -167,28 +236,40 @@ class AdvancingFront {
   }
 
   /// Step 1 of Pseudocode 1: D mutually tangent particles at the seed point (3 in 3D, 2 in 2D).
-  /// The radii come from the pool, so they follow the requested distribution.
+  /// Each takes the largest radius of the pool (the pool still follows the requested
+  /// distribution): three mutually tangent spheres leave a 4th room only if it is not much
+  /// smaller than they are, and a tiny one sunk between two big ones leaves none.
   void initialise(Packing<D>& P, PackResult<D>& res) {
-    const double r1 = take_from_pool(0, res);
-    add_particle(P, res, first_centre(r1), r1);
+    const std::size_t k = largest_in_pool();
+    start_cluster(P, res, first_centre(pool_[k]), k);
+  }
+
+  /// D mutually tangent particles: the first at c1 with radius pool_[k1] (it must fit there), the
+  /// others with the largest pooled radii, tangent in random directions, where they fit. A
+  /// container barely larger than one particle may leave the cluster with fewer.
+  void start_cluster(Packing<D>& P, PackResult<D>& res, const Vec<D>& c1, std::size_t k1) {
+    const double r1 = take_from_pool(k1, res);
+    add_particle(P, res, c1, r1);
+    const int i1 = static_cast<int>(P.size()) - 1;
     if (count_or_fraction_reached(P, res)) return;  // a stop of 1 particle (or a tiny φ0) is honoured
-    // Second particle tangent to the first, in a random direction; give up after a few tries
-    // (a container barely larger than one particle), the front then simply starts with one.
-    for (int attempt = 0; attempt < 64; ++attempt) {
-      const double r2 = pool_[0];
-      const Vec<D> c2 = P.centers[0] + (r1 + r2) * random_unit();
-      if (!container_.contains_ball(c2, r2, tol_)) continue;
-      take_from_pool(0, res);
+    int i2 = -1;
+    for (int attempt = 0; attempt < 64 && i2 < 0; ++attempt) {
+      const std::size_t k2 = largest_in_pool();
+      const double r2 = pool_[k2];
+      const Vec<D> c2 = P.centers[i1] + (r1 + r2) * random_unit();
+      if (!fits(c2, r2)) continue;
+      take_from_pool(k2, res);
       add_particle(P, res, c2, r2);
-      break;
+      i2 = static_cast<int>(P.size()) - 1;
     }
     if constexpr (D == 3) {
-      if (P.size() < 2 || count_or_fraction_reached(P, res)) return;
+      if (i2 < 0 || count_or_fraction_reached(P, res)) return;
       for (int attempt = 0; attempt < 64; ++attempt) {
-        const double r3 = pool_[0];
+        const std::size_t k3 = largest_in_pool();
+        const double r3 = pool_[k3];
         // On the circle of centres tangent to both: pick a random point of it.
-        const Vec3 a = P.centers[0], b = P.centers[1];
-        const double ra = P.radii[0] + r3, rb = P.radii[1] + r3;
+        const Vec3 a = P.centers[i1], b = P.centers[i2];
+        const double ra = P.radii[i1] + r3, rb = P.radii[i2] + r3;
         const Vec3 ab = b - a;
         const double d = ab.norm();
         const Vec3 k = ab / d;
@@ -198,12 +279,23 @@ class AdvancingFront {
         const Vec3 e2 = k.cross(e1);
         const double phi = 2 * kPi * rng_.uniform01();
         const Vec3 c3 = a + x * k + h * (std::cos(phi) * e1 + std::sin(phi) * e2);
-        if (!container_.contains_ball(c3, r3, tol_)) continue;
-        take_from_pool(0, res);
+        if (!fits(c3, r3)) continue;
+        take_from_pool(k3, res);
         add_particle(P, res, c3, r3);
         break;
       }
     }
+  }
+
+  /// Inside the container and overlapping no placed particle (beyond the contact tolerance).
+  bool fits(const Vec<D>& c, double r) const {
+    if (!container_.contains_ball(c, r, tol_)) return false;
+    bool free = true;
+    grid_.for_each_within(c, r, [&](int, const Vec<D>&, double rk, double d2) {
+      const double lim = r + rk - tol_ * std::min(r, rk);
+      if (d2 < lim * lim) free = false;
+    });
+    return free;
   }
 
   /// The seed point if the first particle fits there; else the point nearest to it, on the segment
@@ -220,6 +312,10 @@ class AdvancingFront {
       (container_.contains_ball(seed_point_ + mid * (deep - seed_point_), r1, tol_) ? hi : lo) = mid;
     }
     return seed_point_ + hi * (deep - seed_point_);
+  }
+
+  std::size_t largest_in_pool() const {
+    return static_cast<std::size_t>(std::max_element(pool_.begin(), pool_.end()) - pool_.begin());
   }
 
   double take_from_pool(std::size_t k, PackResult<D>& res) {
@@ -415,6 +511,7 @@ class AdvancingFront {
   std::vector<double> nb_r_;
   int last_blocker_ = 0;
   std::vector<char> in_front_;  // per particle: still in F
+  std::unordered_set<std::int64_t> voids_reopened_;  // lattice points of resume_at_voids() already reopened
   typename Solver::Session session_;
 };
 

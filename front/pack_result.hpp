@@ -24,6 +24,8 @@ struct FrontCounters {
   std::uint64_t radii_drawn = 0;          ///< radii drawn from the distribution
   std::uint64_t radii_unplaced = 0;       ///< radii drawn but never placed (the pool at the end)
   std::uint64_t max_neighbours = 0;       ///< largest |V| seen (bounded by r_max/r_min, paper 002 Sect. 6)
+  std::uint64_t voids_reopened = 0;       ///< voids found after F ran empty, growth resumed from their surroundings
+  std::uint64_t voids_seeded = 0;         ///< voids found after F ran empty and given a new seed particle
 };
 
 template <int D>
