@@ -15,6 +15,7 @@
 //  * pair order (index, or nearest neighbours first) and which candidate to keep (the first
 //    found, or the one closest to the seed point over all pairs);
 //  * which neighbours serve as contact bodies: all of V (paper) or only those still in F;
+//  * with a pool, whether the smallest radius is tried first as a probe (s0 dropped if it fails);
 //  * a pool of radii drawn ahead: a radius that does not fit at s0 waits while the others are
 //    tried; every drawn radius is placed except the pool's last few, so the size distribution
 //    is not distorted (no radius is ever shrunk or discarded to make it fit).
@@ -54,6 +55,7 @@ class AdvancingFront {
     }
     tol_ = opt_.contact_tolerance;
     measure_ = container_.measure();
+    probe_smallest_ = opt_.probe_smallest.value_or(radii.r_max() <= kProbeRatioLimit * radii.r_min());
   }
 
   PackResult<D> run(const ProgressFn& progress = {}) {
@@ -348,6 +350,8 @@ class AdvancingFront {
     // gaps). A radius at least as large as one that already failed at s0 is not tried there
     // again: s0 stays in F only while a smaller radius fits, so re-trying the large one would
     // repeat a failed scan. (Heuristic: new neighbours can in principle open a new position.)
+    // With probe_smallest_ the smallest radius is tried first: if it fails, s0 is dropped after
+    // one scan; if it fits, its position is kept in case every larger radius fails.
     if (failed_radius_.size() < P.size()) failed_radius_.resize(P.size(), std::numeric_limits<double>::infinity());
     double& failed = failed_radius_[s0];
     order_.clear();
@@ -357,12 +361,25 @@ class AdvancingFront {
     std::sort(order_.begin(), order_.end(), [&](int a, int b) { return pool_[a] > pool_[b] || (pool_[a] == pool_[b] && a < b); });
     // The largest radius tried sets V (a superset of every smaller radius' V).
     gather_neighbours(s0, c0, r0, pool_[order_[0]], P, res);
-    for (int k : order_) {
-      const double r = pool_[k];
-      if (place_radius(static_cast<std::size_t>(k), s0, c0, r0, P, res)) return true;
-      failed = std::min(failed, r);
+    std::size_t larger = order_.size();  // order_[0, larger) are tried largest first
+    Vec<D> at_smallest;
+    if (probe_smallest_ && order_.size() >= 2) {
+      const double r = pool_[order_.back()];
+      if (!find_position(r, s0, c0, r0, res, at_smallest)) {
+        failed = std::min(failed, r);
+        return false;
+      }
+      --larger;
     }
-    return false;
+    for (std::size_t q = 0; q < larger; ++q) {
+      const int k = order_[q];
+      if (place_radius(static_cast<std::size_t>(k), s0, c0, r0, P, res)) return true;
+      failed = std::min(failed, pool_[k]);
+    }
+    if (larger == order_.size()) return false;
+    const double r = take_from_pool(static_cast<std::size_t>(order_.back()), res);
+    add_particle(P, res, at_smallest, r);
+    return true;
   }
 
   /// V = particles within r0 + r_s + 2r of c0 (paper's definition), plus walls within 2r.
@@ -401,9 +418,18 @@ class AdvancingFront {
   /// Tries to place pool_[k] touching s0 and D-1 bodies of V; places it and returns true on success.
   bool place_radius(std::size_t k, int s0, const Vec<D>& c0, double r0, Packing<D>& P, PackResult<D>& res) {
     const double r = pool_[k];
+    Vec<D> best;
+    if (!find_position(r, s0, c0, r0, res, best)) return false;
+    take_from_pool(k, res);
+    add_particle(P, res, best, r);
+    return true;
+  }
+
+  /// Step 2.2 for one radius: a position touching s0 and D-1 bodies of V, overlapping nothing,
+  /// inside the container (the one kept by opt_.candidate). False if there is none.
+  bool find_position(double r, int s0, const Vec<D>& c0, double r0, PackResult<D>& res, Vec<D>& best) {
     const bool keep_first = opt_.candidate == CandidateChoice::First;
     bool found = false;
-    Vec<D> best;
     double best_d2 = 0;
     // Every candidate lies within r0 + r of c0: a lower bound for its distance to the seed.
     const double lower_bound_here = std::max(0.0, (c0 - seed_point_).norm() - r0 - r);
@@ -461,10 +487,7 @@ class AdvancingFront {
         }
       }
     }
-    if (!found) return false;
-    take_from_pool(k, res);
-    add_particle(P, res, best, r);
-    return true;
+    return found;
   }
 
   /// Does the ball (x, r) overlap any particle of V by more than the contact tolerance?
@@ -496,6 +519,7 @@ class AdvancingFront {
   Solver solver_;
   Vec<D> seed_point_;
   double tol_ = 1e-9;
+  bool probe_smallest_ = false;
   double measure_ = 0;  // container volume (area), cached: a mesh computes it from its facets
 
   std::priority_queue<FrontEntry> heap_;

@@ -21,12 +21,20 @@ enum class PairOrder { Index, NearestFirst };
 /// those still in the front F. A closed particle is still an obstacle in both cases.
 enum class ContactBodies { All, Front };
 
+/// Widest size ratio for which probe_smallest is on by default (measured: experiments/front-levers).
+inline constexpr double kProbeRatioLimit = 8.0;
+
 struct PackerOptions {
   std::string method = "front";              ///< the advancing front (the only method of this issue)
   FrontPick front_pick = FrontPick::ClosestToSeed;
   CandidateChoice candidate = CandidateChoice::ClosestToSeed;
   PairOrder pair_order = PairOrder::NearestFirst;
   ContactBodies contact_bodies = ContactBodies::Front;  ///< pairs among front particles only: ~4x fewer solves
+  /// With a pool: first check that the smallest pooled radius fits at s0 and drop s0 at once if
+  /// not (one failed scan instead of one per radius). Sound when a radius that does not fit
+  /// implies larger ones do not either, which fails for wide distributions (a large particle can
+  /// bridge a gap a small one cannot). Unset = on when r_max / r_min <= kProbeRatioLimit.
+  std::optional<bool> probe_smallest;
   bool walls_as_bodies = true;               ///< particles may touch container walls (closes the boundary gap)
   int radius_pool = 4;                       ///< radii drawn ahead; a radius that does not fit waits, others are tried (1 = paper)
   double contact_tolerance = 1e-9;           ///< relative: a contact is |gap| <= tol * min(ri, rj)

@@ -472,7 +472,7 @@ RadiusDistributionPtr parse_distribution(const Value& v, int dimension) {
 template <int D>
 void parse_packer(const Value& v, const Container<D>& container, PackerOptions& p) {
   const Map m = v.map();
-  m.check_known({"method", "front", "candidate", "pair_order", "contact_bodies", "walls", "radius_pool", "contact_tolerance",
+  m.check_known({"method", "front", "candidate", "pair_order", "contact_bodies", "probe_smallest", "walls", "radius_pool", "contact_tolerance",
                  "grid_cell_factor", "hierarchical_grid_ratio", "seed_point"});
   if (auto x = m.find("method")) p.method = x->choice({"front"});
   if (auto x = m.find("front")) {
@@ -485,6 +485,10 @@ void parse_packer(const Value& v, const Container<D>& container, PackerOptions& 
     p.pair_order = x->choice({"nearest", "index"}) == "nearest" ? PairOrder::NearestFirst : PairOrder::Index;
   if (auto x = m.find("contact_bodies"))
     p.contact_bodies = x->choice({"front", "all"}) == "front" ? ContactBodies::Front : ContactBodies::All;
+  if (auto x = m.find("probe_smallest")) {
+    if (x->node().IsScalar() && x->node().Scalar() == "auto") p.probe_smallest.reset();
+    else p.probe_smallest = x->boolean();
+  }
   if (auto x = m.find("walls")) p.walls_as_bodies = x->boolean();
   if (auto x = m.find("radius_pool")) {
     const std::uint64_t n = x->unsigned_integer();

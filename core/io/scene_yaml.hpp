@@ -27,7 +27,7 @@
 //       gradation: curve* ([[sieve DIAMETER, % passing], ...]), basis (mass | count, default mass)
 //   packer:
 //     method: front;  front: closest | random | fifo;  candidate: closest | first;
-//     pair_order: nearest | index;  contact_bodies: front | all;  walls: bool;  radius_pool: integer >= 1;
+//     pair_order: nearest | index;  contact_bodies: front | all;  probe_smallest: auto | bool;  walls: bool;  radius_pool: integer >= 1;
 //     contact_tolerance: in (0, 1e-3);  grid_cell_factor: >= 1;  hierarchical_grid_ratio: > 1;
 //     seed_point: [x, y(, z)] inside the container
 //   stop:

@@ -51,6 +51,34 @@ particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
   EXPECT_GT(volume_fraction<2>(res.packing, 0.9 * 0.8 - 0.3 * 0.5), 0.6);
 }
 
+// The smallest-radius probe (on by default for narrow distributions) drops s0 after one failed
+// scan; it must not cost density where it is on, and must not be on where it would (ratio 50).
+TEST(FrontProbe, CostsNoDensityOnANarrowDistribution) {
+  const std::string base = R"(dimension: 3
+seed: 8
+container: {type: box, min: [0, 0, 0], max: [0.4, 0.4, 0.4]}
+particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
+)";
+  const auto on = fp::pack<3>(scene_from_yaml(base + "packer: {probe_smallest: true}\n"));
+  const auto off = fp::pack<3>(scene_from_yaml(base + "packer: {probe_smallest: false}\n"));
+  const auto deflt = fp::pack<3>(scene_from_yaml(base));
+  EXPECT_TRUE(bitwise_equal<3>(deflt.packing, on.packing)) << "auto must be on for r_max / r_min = 2";
+  expect_valid<3>(on.packing, box_distance<3>(Vec3::Zero(), Vec3::Constant(0.4)), 0.01, 0.02, "probe on");
+  EXPECT_NEAR(volume_fraction<3>(on.packing, 0.064), volume_fraction<3>(off.packing, 0.064), 0.005);
+  EXPECT_LT(on.counters.solves, off.counters.solves);
+}
+
+TEST(FrontProbe, AutoIsOffForWideDistributions) {
+  const std::string base = R"(dimension: 3
+seed: 1
+container: {type: box, min: [0, 0, 0], max: [1, 1, 1]}
+particles: {radius: {distribution: uniform, min: 0.001, max: 0.05}}
+)";
+  const auto deflt = fp::pack<3>(scene_from_yaml(base));
+  const auto off = fp::pack<3>(scene_from_yaml(base + "packer: {probe_smallest: false}\n"));
+  EXPECT_TRUE(bitwise_equal<3>(deflt.packing, off.packing));
+}
+
 INSTANTIATE_TEST_SUITE_P(AllCombinations, FrontOptions,
                          ::testing::Combine(::testing::Values(std::string("closest"), std::string("random"), std::string("fifo")),
                                             ::testing::Values(std::string("closest"), std::string("first")),

@@ -272,6 +272,10 @@ TEST(SceneYaml, PackerEnumsAndOutputsMapToOptions) {
   EXPECT_EQ(s.packer.candidate, CandidateChoice::ClosestToSeed);
   EXPECT_EQ(s.packer.pair_order, PairOrder::NearestFirst);
   EXPECT_EQ(s.packer.contact_bodies, ContactBodies::All);
+  EXPECT_FALSE(s.packer.probe_smallest);  // not given: auto
+  EXPECT_EQ(parse_scene(kRect2 + "packer: {probe_smallest: true}\n", "p.yaml").packer.probe_smallest, true);
+  EXPECT_EQ(parse_scene(kRect2 + "packer: {probe_smallest: false}\n", "p.yaml").packer.probe_smallest, false);
+  EXPECT_FALSE(parse_scene(kRect2 + "packer: {probe_smallest: auto}\n", "p.yaml").packer.probe_smallest);
   EXPECT_TRUE(s.packer.walls_as_bodies);
   EXPECT_EQ(*s.packer.seed_point, (std::vector<double>{0.25, 0.75}));
   EXPECT_EQ(s.stop.max_particles, 2500u);
@@ -410,6 +414,7 @@ TEST(SceneYamlErrors, BadEnumValuesListTheAllowedOnes) {
   expect_error(kBox3 + "packer: {candidate: any}\n", 5, "packer.candidate", {"closest, first"});
   expect_error(kBox3 + "packer: {pair_order: random}\n", 5, "packer.pair_order", {"nearest, index"});
   expect_error(kBox3 + "packer: {contact_bodies: some}\n", 5, "packer.contact_bodies", {"front, all"});
+  expect_error(kBox3 + "packer: {probe_smallest: sometimes}\n", 5, "packer.probe_smallest", {});
   expect_error(kBox3 + "packer: {method: mesh}\n", 5, "packer.method", {"front"});
   expect_error(kBox3 + "output:\n  - {format: vtk, path: a.vtk}\n", 6, "output[0].format", {"vtu, yade, lammps, csv, json"});
   expect_error(kBox3 + "output:\n  - {path: a.xyz}\n", 6, "output[0].path", {"extension", "format"});
