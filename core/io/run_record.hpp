@@ -1,6 +1,6 @@
 #pragma once
 // The JSON run record: what was run (scene text, seed, version) and what came out (counts,
-// timings, metrics). Only run_record.cpp includes nlohmann_json.
+// timings, metrics). Only run_record.cpp and analysis_json.cpp include nlohmann_json.
 //
 // Layout (keys always present, in this order, so identical input gives identical bytes):
 //   frontpack_version, dimension, seed, n, scene {path, text}, container, distribution,

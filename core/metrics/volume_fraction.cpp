@@ -3,26 +3,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/metrics/compensated_sum.hpp"
 #include "core/metrics/lens.hpp"
 
 namespace fp {
-namespace {
-
-// Neumaier's compensated sum: a million terms of very different sizes keep full precision.
-class CompensatedSum {
- public:
-  void add(double x) {
-    const double t = sum_ + x;
-    comp_ += std::abs(sum_) >= std::abs(x) ? (sum_ - t) + x : (x - t) + sum_;
-    sum_ = t;
-  }
-  double value() const { return sum_ + comp_; }
-
- private:
-  double sum_ = 0.0, comp_ = 0.0;
-};
-
-}  // namespace
 
 template <int D>
 double vf_reference_sphere(const Packing<D>& packing, const Vec<D>& center, double r_ref) {

@@ -1,0 +1,183 @@
+#include "core/metrics/packing_analysis.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "core/geometry/box_container.hpp"
+#include "core/metrics/contacts.hpp"
+#include "core/metrics/volume_fraction.hpp"
+
+namespace fp {
+namespace {
+
+// Runs f and appends (name, seconds) to the timings.
+template <class F>
+void timed(std::vector<std::pair<std::string, double>>& timings, const char* name, F&& f) {
+  const auto t0 = std::chrono::steady_clock::now();
+  f();
+  timings.emplace_back(name, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+}
+
+template <int D>
+std::unique_ptr<Container<D>> bounding_box_of_balls(const Packing<D>& packing) {
+  Aabb<D> box;
+  for (std::size_t i = 0; i < packing.size(); ++i) {
+    const double r = packing.radii[i];
+    if (!(r >= 0.0) || !std::isfinite(r) || !packing.centers[i].allFinite()) continue;
+    box.extend(packing.centers[i] - Vec<D>::Constant(r));
+    box.extend(packing.centers[i] + Vec<D>::Constant(r));
+  }
+  if (!((box.hi.array() > box.lo.array()).all())) return nullptr;
+  return std::make_unique<BoxContainer<D>>(box.lo, box.hi);
+}
+
+}  // namespace
+
+std::string PackingAnalysis::summary() const {
+  std::string s;
+  char buf[400];
+  auto line = [&](const char* fmt, auto... args) {
+    std::snprintf(buf, sizeof buf, fmt, args...);
+    if (!s.empty()) s += '\n';
+    s += buf;
+  };
+  auto estimate = [](const RegionVolumeFraction& v) {
+    char b[200];
+    if (v.exact) std::snprintf(b, sizeof b, "%.6f (exact)", v.vf.value);
+    else std::snprintf(b, sizeof b, "%.6f +- %.2g (%s)", v.vf.value, v.vf.std_error, v.method.c_str());
+    return std::string(b);
+  };
+  line("particles            %llu (%dD), r in [%.6g, %.6g], mean %.6g", static_cast<unsigned long long>(particles),
+       dimension, r_min, r_max, r_mean);
+  line("container            %s%s", container.c_str(),
+       container_from_particles ? " (bounding box of the particles)" : "");
+  line("VF reference ball    %.6f (r_ref = a = %.6g; %zu radii from r_max)", vf_reference, reference_radius,
+       vf_curve.size());
+  line("VF container         %s", estimate(vf_container).c_str());
+  line("VF core              %s, 2 r_max = %.6g inside", estimate(vf_core).c_str(), vf_core.shrink);
+  line("coordination z       %.4f (%.4f with walls), %llu rattlers, tol %.3g", coordination.mean_coordination,
+       coordination.mean_coordination_with_walls, static_cast<unsigned long long>(coordination.rattlers),
+       contact_tolerance);
+  line("contacts             %llu between particles, %llu with walls",
+       static_cast<unsigned long long>(coordination.contacts),
+       static_cast<unsigned long long>(coordination.wall_contacts));
+  line("max overlap / gap    %.3g / %.3g r_min", max_overlap_rel, max_contact_gap_rel);
+  auto eigen = [&](const char* name, const FabricTensor& f) {
+    std::string v;
+    for (const double e : f.eigenvalues) {
+      std::snprintf(buf, sizeof buf, "%s%.4f", v.empty() ? "" : ", ", e);
+      v += buf;
+    }
+    line("%s (%s)", name, v.c_str());
+  };
+  eigen("fabric per contact  ", fabric.per_contact);
+  eigen("fabric per particle ", fabric.per_particle);
+  const char* axes = "xyz";
+  for (std::size_t a = 0; a < homogeneity.axis.size(); ++a) {
+    const KsResult& k = homogeneity.axis[a];
+    line("K-S centres %c        sqrt(n) D = %.4f (%s 1.358), p = %.3g", axes[a], k.sqrt_n_d,
+         k.below_critical() ? "<" : ">=", k.p);
+  }
+  for (std::size_t a = 0; a < projections.ks.size(); ++a)
+    line("K-S projections %c    D = %.4f, p = %.3g vs %s", axes[a], projections.ks[a].d, projections.ks[a].p,
+         projections.reference.c_str());
+  if (!distribution.empty())
+    line("K-S radii            D = %.4g, p = %.3g vs %s", radii_ks.d, radii_ks.p, distribution.c_str());
+  if (!rdf.g.empty()) {
+    const auto peak = std::max_element(rdf.g.begin(), rdf.g.end()) - rdf.g.begin();
+    line("g(r)                 max %.3f at r = %.3f <d>, %llu reference particles", rdf.g[peak], rdf.r[peak],
+         static_cast<unsigned long long>(rdf.reference_particles));
+  }
+  if (validation) {
+    s += '\n';
+    s += validation->summary();
+  }
+  return s;
+}
+
+template <int D>
+PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* container_or_null,
+                                const RadiusDistribution* dist_or_null, const AnalysisOptions& options) {
+  PackingAnalysis a;
+  a.dimension = D;
+  a.particles = packing.size();
+  a.contact_tolerance = options.contact_tolerance;
+  std::vector<double> radii;  // positive and finite
+  for (std::size_t i = 0; i < packing.size(); ++i)
+    if (packing.radii[i] > 0.0 && std::isfinite(packing.radii[i]) && packing.centers[i].allFinite())
+      radii.push_back(packing.radii[i]);
+  if (!radii.empty()) {
+    a.r_min = *std::min_element(radii.begin(), radii.end());
+    a.r_max = *std::max_element(radii.begin(), radii.end());
+    for (const double r : radii) a.r_mean += r;
+    a.r_mean /= static_cast<double>(radii.size());
+  }
+
+  std::unique_ptr<Container<D>> own;
+  if (container_or_null == nullptr) {
+    own = bounding_box_of_balls(packing);
+    a.container_from_particles = true;
+  }
+  const Container<D>* container = own ? own.get() : container_or_null;
+  if (container == nullptr) return a;  // no ball with a positive size: nothing to measure
+  a.container = container->describe();
+  a.container_measure = container->measure();
+  auto& t = a.timings;
+
+  if (options.validate)
+    timed(t, "validate",
+          [&] { a.validation = validate_packing(packing, *container, dist_or_null, options.contact_tolerance); });
+
+  timed(t, "contacts", [&] {
+    a.coordination = contact_stats(packing, container, options.contact_tolerance);
+    a.max_overlap_rel = a.coordination.max_overlap_rel;
+  });
+  std::vector<PairContact> contacts;
+  timed(t, "contact network", [&] {
+    contacts = find_pair_contacts(packing, options.contact_tolerance);
+    for (const PairContact& c : contacts) a.max_contact_gap_rel = std::max(a.max_contact_gap_rel, std::abs(c.gap));
+    if (a.r_min > 0.0) a.max_contact_gap_rel /= a.r_min;
+    a.partial_coordination = partial_coordination(packing.radii, contacts, options.partial_coordination_points);
+    a.fabric = fabric_tensors(packing, contacts);
+    a.projections = relative_projections(packing, contacts, options.projection_bins);
+  });
+
+  timed(t, "homogeneity", [&] {
+    a.homogeneity = centre_homogeneity(packing, container->bounds(), a.r_max);
+    if (dist_or_null != nullptr) {
+      // The sample validate_packing tests: every ball with a finite centre and radius.
+      std::vector<double> sample;
+      for (std::size_t i = 0; i < packing.size(); ++i)
+        if (std::isfinite(packing.radii[i]) && packing.centers[i].allFinite()) sample.push_back(packing.radii[i]);
+      a.distribution = dist_or_null->describe();
+      a.radii_ks = ks_one_sample(std::move(sample), [dist_or_null](double r) { return dist_or_null->cdf(r); });
+    }
+  });
+
+  timed(t, "volume fraction", [&] {
+    const Vec<D> c = container->interior_point();
+    a.reference_center.assign(c.data(), c.data() + D);
+    a.reference_radius = -container->signed_distance(c);
+    if (a.reference_radius > 0.0) {
+      const double from = a.r_max > 0.0 ? std::min(a.r_max, a.reference_radius) : a.reference_radius;
+      const int points = from < a.reference_radius ? options.vf_curve_points : 1;
+      a.vf_curve = vf_reference_curve(packing, c, from, a.reference_radius, points);
+      a.vf_reference = a.vf_curve.back().second;
+    }
+    a.vf_container = vf_region(packing, *container, 0.0, options.qmc);
+    a.vf_core = vf_region(packing, *container, 2.0 * a.r_max, options.qmc);
+  });
+
+  timed(t, "g(r)", [&] { a.rdf = radial_distribution(packing, *container, options.rdf); });
+  return a;
+}
+
+template PackingAnalysis analyze_packing<2>(const Packing<2>&, const Container<2>*, const RadiusDistribution*,
+                                            const AnalysisOptions&);
+template PackingAnalysis analyze_packing<3>(const Packing<3>&, const Container<3>*, const RadiusDistribution*,
+                                            const AnalysisOptions&);
+
+}  // namespace fp
