@@ -289,6 +289,9 @@ class AdvancingFront {
     }
   }
 
+  /// The ball (x, r), inside the container, touches its boundary (within the contact tolerance).
+  bool touches_boundary(const Vec<D>& x, double r) const { return container_.signed_distance(x) >= -r - tol_ * r; }
+
   /// Inside the container and overlapping no placed particle (beyond the contact tolerance).
   bool fits(const Vec<D>& c, double r) const {
     if (!container_.contains_ball(c, r, tol_)) return false;
@@ -391,6 +394,8 @@ class AdvancingFront {
     });
     if (opt_.pair_order == PairOrder::NearestFirst)
       std::sort(nb_.begin(), nb_.end(), [](const Neighbour& a, const Neighbour& b) { return a.gap < b.gap || (a.gap == b.gap && a.id < b.id); });
+    else  // particle index order (the grid's visiting order would favour a direction of space)
+      std::sort(nb_.begin(), nb_.end(), [](const Neighbour& a, const Neighbour& b) { return a.id < b.id; });
     res.counters.max_neighbours = std::max<std::uint64_t>(res.counters.max_neighbours, nb_.size());
     walls_.clear();
     if (opt_.walls_as_bodies) {
@@ -458,6 +463,9 @@ class AdvancingFront {
         }
         if (overlaps_neighbour(x, r)) { ++res.counters.rejected_overlap; continue; }
         if (!container_.contains_ball(x, r, tol_)) { ++res.counters.rejected_container; continue; }
+        // A mesh facet or polygon edge is offered as its whole plane (line): a position tangent
+        // to the plane beyond the facet's edges does not touch the container at all.
+        if (rank == 0 && !touches_boundary(x, r)) { ++res.counters.rejected_container; continue; }
         found = true;
         best = x;
         best_d2 = d2;

@@ -35,6 +35,18 @@ void pack_and_check(const std::string& name, const std::string& yaml, const Sign
   // growth from the centre meets a concentric wall everywhere at once, leaving a thin annulus.)
   EXPECT_GE(v.containment.touching_walls, 5u) << name;
 
+  // Every particle is placed tangent to D bodies (s0 and D-1 particles or walls), so apart from
+  // the initial cluster(s) a particle that touches no wall (brute-force distance) touches at
+  // least D particles. (A facet's plane touched beyond the facet's edges is no contact: placing
+  // particles there was a bug.)
+  const std::vector<int> z_particles = particle_contacts<D>(P, 1e-8);
+  std::size_t under = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const bool wall = sd(P.centers[i]) + P.radii[i] >= -1e-8 * P.radii[i];
+    if (!wall && z_particles[i] < D) ++under;
+  }
+  EXPECT_LE(under, static_cast<std::size_t>(D) * (1 + res.counters.voids_seeded)) << name << ": particles with < D contacts";
+
   std::size_t bulk = 0;
   const double z = bulk_mean_coordination<D>(P, sd, e.bulk_depth, bulk);
   EXPECT_GE(static_cast<double>(bulk), e.min_bulk_share * static_cast<double>(P.size())) << name;
