@@ -9,6 +9,7 @@
 #include <iostream>
 #include <string>
 
+#include "cli/analyze_command.hpp"
 #include "cli/pack_command.hpp"
 #include "cli/validate_command.hpp"
 #include "frontpack/version.hpp"
@@ -38,8 +39,9 @@ int main(int argc, char** argv) {
   pack_cmd->add_flag("--progress", pack.force_progress, "progress line on stderr even when it is not a terminal");
 
   // CLI11 would answer "A subcommand is required" to a mistyped command.
-  if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != "pack" && std::string(argv[1]) != "validate") {
-    std::cerr << "frontpack: error: unknown command '" << argv[1] << "' (commands: pack, validate; see frontpack --help)\n";
+  const std::string command = argc > 1 ? argv[1] : "";
+  if (!command.empty() && command[0] != '-' && command != "pack" && command != "validate" && command != "analyze") {
+    std::cerr << "frontpack: error: unknown command '" << command << "' (commands: pack, validate, analyze; see frontpack --help)\n";
     return 2;
   }
   fp::ValidateCommandOptions check;
@@ -55,6 +57,21 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 1.0));
   validate_cmd->add_flag("-q,--quiet", check.quiet, "no report; the exit code only");
 
+  fp::AnalyzeCommandOptions an;
+  CLI::App* analyze_cmd =
+      app.add_subcommand("analyze", "quality figures of a packing file: VF, coordination, fabric, K-S, g(r)");
+  analyze_cmd->add_option("packing", an.packing_path, "packing file (vtu, yade, lammps, csv or json)")->required();
+  analyze_cmd->add_option("--scene", an.scene_path,
+                          "the scene it fills: container, requested radii, contact tolerance (default: the "
+                          "particles' bounding box, no distribution)");
+  analyze_cmd->add_option("--format", an.format, "format of PACKING (default: from its extension)");
+  analyze_cmd->add_option("--json", an.json_path, "write every figure as JSON to OUT");
+  analyze_cmd->add_option("--plots", an.plots_dir, "draw PNG figures into DIR (needs python3-matplotlib)");
+  analyze_cmd->add_option("--tolerance", an.tolerance, "contact tolerance relative to min(ri, rj)")
+      ->check(CLI::NonNegativeNumber);
+  analyze_cmd->add_option("--python", an.python, "interpreter with matplotlib (default /usr/bin/python3)");
+  analyze_cmd->add_flag("-q,--quiet", an.quiet, "no table");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -62,6 +79,7 @@ int main(int argc, char** argv) {
     return (code == 0) ? 0 : 2;
   }
   if (validate_cmd->parsed()) return fp::run_validate_command(check);
+  if (analyze_cmd->parsed()) return fp::run_analyze_command(an);
   if (pack_cmd->parsed()) {
     pack.progress = pack.force_progress || isatty(fileno(stderr));
     return fp::run_pack_command(pack);

@@ -5,8 +5,9 @@
 set -euo pipefail
 packages=(build-essential cmake libeigen3-dev libcgal-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev)
 if [[ "${1:-}" == "--test" ]]; then
-  # python3-vtk9: the VTU files are read back by VTK itself; numpy: independent cross-checks.
-  packages+=(libgtest-dev libgmock-dev libbenchmark-dev python3 python3-numpy python3-vtk9)
+  # python3-vtk9: the VTU files are read back by VTK itself; numpy: independent cross-checks;
+  # matplotlib: `frontpack analyze --plots`.
+  packages+=(libgtest-dev libgmock-dev libbenchmark-dev python3 python3-numpy python3-vtk9 python3-matplotlib)
 fi
 missing=()
 for p in "${packages[@]}"; do

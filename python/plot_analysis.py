@@ -1,0 +1,133 @@
+#!/usr/bin/env python3
+"""Figures of a frontpack analysis, called by `frontpack analyze --plots DIR`.
+
+    plot_analysis.py ANALYSIS.json RADIUS_CDF.csv OUT_DIR
+
+ANALYSIS.json is core/io/analysis_json.hpp's layout; RADIUS_CDF.csv has columns
+r,empirical,requested (requested empty without a scene). Writes vf_curve.png,
+coordination.png, radii.png, rdf.png, partial_coordination.png and fabric.png.
+Exit code 3 when matplotlib is missing (Debian: apt-get install python3-matplotlib).
+"""
+import csv
+import json
+import os
+import sys
+
+try:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+except ImportError:
+    sys.stderr.write("plot_analysis.py: matplotlib is missing (apt-get install python3-matplotlib)\n")
+    sys.exit(3)
+
+
+def save(fig, out_dir, name):
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, name), dpi=120)
+    plt.close(fig)
+
+
+def vf_curve(a, out_dir):
+    c = a["volume_fraction"]["curve"]
+    fig, ax = plt.subplots(figsize=(5, 3.5))
+    ax.plot(c["r_ref"], c["vf"], "o-", ms=3)
+    ax.set_xlabel("reference sphere radius r_ref")
+    ax.set_ylabel("volume fraction in the reference sphere")
+    ax.set_title("VF against r_ref (paper 002, Eq. 2)")
+    ax.grid(alpha=0.3)
+    save(fig, out_dir, "vf_curve.png")
+
+
+def coordination(a, out_dir):
+    c = a["coordination"]
+    h = c["histogram"]
+    fig, ax = plt.subplots(figsize=(5, 3.5))
+    ax.bar(range(len(h)), h)
+    ax.set_xlabel("contacts per particle (particles only)")
+    ax.set_ylabel("particles")
+    ax.set_title("coordination: mean %.3f (%.3f with walls)" % (c["mean"], c["mean_with_walls"]))
+    save(fig, out_dir, "coordination.png")
+
+
+def radii(cdf_path, a, out_dir):
+    r, emp, req = [], [], []
+    with open(cdf_path, newline="") as f:
+        for row in csv.DictReader(f):
+            r.append(float(row["r"]))
+            emp.append(float(row["empirical"]))
+            req.append(float(row["requested"]) if row["requested"] else None)
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(9, 3.5))
+    ax1.hist(r, bins=min(40, max(5, len(r) // 20)), density=True, alpha=0.7, label="placed (sample)")
+    ax1.set_xlabel("radius")
+    ax1.set_ylabel("probability density")
+    ax2.step(r, emp, where="post", label="placed")
+    if req and all(v is not None for v in req):
+        ax2.plot(r, req, "--", label="requested")
+        ks = a["radii_ks"]
+        ax2.set_title("K-S D = %.4g, p = %.3g" % (ks["d"], ks["p"]))
+    ax2.set_xlabel("radius")
+    ax2.set_ylabel("CDF")
+    ax2.legend()
+    ax1.legend()
+    save(fig, out_dir, "radii.png")
+
+
+def rdf(a, out_dir):
+    g = a["rdf"]
+    fig, ax = plt.subplots(figsize=(5, 3.5))
+    ax.plot(g["r"], g["g"], lw=1)
+    ax.axhline(1.0, color="grey", lw=0.5)
+    ax.set_xlabel("r / mean diameter")
+    ax.set_ylabel("g(r)")
+    ax.set_title("radial distribution function")
+    save(fig, out_dir, "rdf.png")
+
+
+def partial_coordination(a, out_dir):
+    p = a["coordination"]["partial"]
+    fig, ax = plt.subplots(figsize=(5, 3.5))
+    ax.plot(p["xi"], p["z"], "o-", ms=3)
+    ax.set_xlabel("xi = (r - r_min) / (r_max - r_min)")
+    ax.set_ylabel("z(xi)")
+    ax.set_title("partial coordination (paper 000)")
+    ax.grid(alpha=0.3)
+    save(fig, out_dir, "partial_coordination.png")
+
+
+def fabric(a, out_dir):
+    f = a["fabric"]
+    fig, ax = plt.subplots(figsize=(5, 3.5))
+    d = a["dimension"]
+    width = 0.35
+    for k, (name, key) in enumerate([("per contact", "per_contact"), ("per particle", "per_particle")]):
+        ev = f[key]["eigenvalues"]
+        ax.bar([i + k * width for i in range(len(ev))], ev, width, label=name)
+    ax.axhline(1.0 / d, color="grey", lw=0.8, ls="--", label="isotropic 1/%d" % d)
+    ax.set_xticks([i + width / 2 for i in range(d)])
+    ax.set_xticklabels(["λ%d" % (i + 1) for i in range(d)])
+    ax.set_ylabel("eigenvalue")
+    ax.set_title("fabric tensor eigenvalues")
+    ax.legend()
+    save(fig, out_dir, "fabric.png")
+
+
+def main():
+    if len(sys.argv) != 4:
+        sys.stderr.write(__doc__)
+        return 2
+    with open(sys.argv[1]) as f:
+        a = json.load(f)
+    out_dir = sys.argv[3]
+    vf_curve(a, out_dir)
+    coordination(a, out_dir)
+    radii(sys.argv[2], a, out_dir)
+    rdf(a, out_dir)
+    partial_coordination(a, out_dir)
+    fabric(a, out_dir)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
