@@ -13,9 +13,8 @@
 #include "core/io/packing_writers.hpp"
 #include "core/io/run_record.hpp"
 #include "core/io/scene_yaml.hpp"
-#include "core/metrics/contact_stats.hpp"
-#include "core/metrics/validate.hpp"
-#include "core/metrics/volume_fraction.hpp"
+#include "core/io/analysis_json.hpp"
+#include "core/metrics/packing_analysis.hpp"
 #include "front/pack.hpp"
 #include "frontpack/version.hpp"
 
@@ -93,15 +92,13 @@ int run(const Scene& scene, const PackCommandOptions& o) {
   progress.finish();
   const Packing<D>& P = res.packing;
 
-  // Metrics, from core/metrics (the same code `analyze` uses), and the independent validation.
+  // Every figure of `frontpack analyze`, from the same code, the independent validation included.
   const auto t_metrics = Clock::now();
-  const double vf_box = vf_container<D>(P, container.measure());
-  const Vec<D> ref_center = container.interior_point();
-  const double ref_radius = -container.signed_distance(ref_center);
-  const double vf_ref = vf_reference_sphere<D>(P, ref_center, ref_radius);
-  const double tol = scene.packer.contact_tolerance;
-  const ContactStats cs = contact_stats<D>(P, &container, tol);
-  const ValidationReport vr = validate_packing<D>(P, container, scene.radii.get(), tol);
+  AnalysisOptions analysis_options;
+  analysis_options.contact_tolerance = scene.packer.contact_tolerance;
+  const PackingAnalysis a = analyze_packing<D>(P, &container, scene.radii.get(), analysis_options);
+  const ValidationReport& vr = *a.validation;
+  const ContactStats& cs = a.coordination;
   const double metrics_seconds = since(t_metrics);
 
   RunRecord rec;
@@ -123,10 +120,11 @@ int run(const Scene& scene, const PackCommandOptions& o) {
     rec.bounds = b3;
   }
   rec.timings = {{"pack", res.seconds}, {"metrics", metrics_seconds}};
-  rec.metrics = {{"volume_fraction_container", vf_box},
-                 {"volume_fraction_reference_sphere", vf_ref},
-                 {"reference_sphere_radius", ref_radius},
-                 {"contact_tolerance", tol},
+  rec.metrics = {{"volume_fraction_container", a.vf_container.vf.value},
+                 {"volume_fraction_core", a.vf_core.vf.value},
+                 {"volume_fraction_reference_sphere", a.vf_reference},
+                 {"reference_sphere_radius", a.reference_radius},
+                 {"contact_tolerance", a.contact_tolerance},
                  {"mean_coordination", cs.mean_coordination},
                  {"mean_coordination_with_walls", cs.mean_coordination_with_walls},
                  {"rattler_fraction", P.empty() ? 0.0 : static_cast<double>(cs.rattlers) / P.size()},
@@ -136,7 +134,9 @@ int run(const Scene& scene, const PackCommandOptions& o) {
                  {"radii_ks_pvalue", vr.radii_ks_pvalue},
                  {"particles_per_second", res.seconds > 0 ? P.size() / res.seconds : 0.0}};
   const char* axis_names[] = {"x", "y", "z"};
-  for (int a = 0; a < D; ++a) rec.metrics.emplace_back(std::string("reference_sphere_center_") + axis_names[a], ref_center[a]);
+  for (int a_ = 0; a_ < D; ++a_)
+    rec.metrics.emplace_back(std::string("reference_sphere_center_") + axis_names[a_], a.reference_center[a_]);
+  rec.analysis_json = analysis_json(a);
   const FrontCounters& c = res.counters;
   rec.counters = {{"front_picks", c.front_picks},         {"front_removals", c.front_removals},
                   {"pairs_considered", c.pairs_considered}, {"pairs_pruned", c.pairs_pruned},
@@ -161,17 +161,11 @@ int run(const Scene& scene, const PackCommandOptions& o) {
                 container.measure());
     std::printf("  radii          %s\n", scene.radii->describe().c_str());
     std::printf("  particles      %zu   (stop: %s)\n", P.size(), to_string(res.stop));
-    std::printf("  VF container   %.4f   (exact: every particle is inside)\n", vf_box);
-    std::printf("  VF ref sphere  %.4f   (r_ref %.6g at the container's interior point)\n", vf_ref, ref_radius);
-    std::printf("  coordination   %.3f mean, %.3f with walls; %llu contacts, %llu wall contacts, %.1f %% rattlers"
-                "   (contact: |gap| <= %.0e min(ri, rj))\n",
-                cs.mean_coordination, cs.mean_coordination_with_walls, static_cast<unsigned long long>(cs.contacts),
-                static_cast<unsigned long long>(cs.wall_contacts),
-                P.empty() ? 0.0 : 100.0 * static_cast<double>(cs.rattlers) / P.size(), tol);
-    std::printf("  max overlap    %.3g r_min;  max outside %.3g r;  radii K-S p = %.3g\n", vr.max_overlap_rel,
-                vr.max_outside_rel, vr.radii_ks_pvalue);
+    std::string table = "  " + a.summary();
+    for (std::size_t at = table.find('\n'); at != std::string::npos; at = table.find('\n', at + 3)) table.insert(at + 1, "  ");
+    std::printf("%s\n", table.c_str());
     std::printf("  validation     %s\n", vr.ok ? "ok (every pair, every particle against the container, radii range)"
-                                                : vr.summary().c_str());
+                                                : "FAILED (see above)");
     std::printf("  time           pack %.3f s (%.0f particles/s), metrics %.3f s, write %.3f s\n", res.seconds,
                 res.seconds > 0 ? P.size() / res.seconds : 0.0, metrics_seconds, write_seconds);
     for (const OutputSpec& out : scene.outputs) std::printf("  output         %s (%s)\n", out.path.c_str(), out.format.c_str());

@@ -39,6 +39,7 @@ Json record_object(const RunRecord& r) {
   for (const auto& [k, v] : r.counters) j["counters"][k] = v;
   j["info"] = Json::object();
   for (const auto& [k, v] : r.info) j["info"][k] = v;
+  if (!r.analysis_json.empty()) j["analysis"] = Json::parse(r.analysis_json);
   return j;
 }
 

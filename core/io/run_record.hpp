@@ -35,6 +35,9 @@ struct RunRecord {
   std::vector<std::pair<std::string, double>> metrics;
   std::vector<std::pair<std::string, std::uint64_t>> counters;
   std::vector<std::pair<std::string, std::string>> info;
+  /// The packing's full analysis as JSON text (core/io/analysis_json.hpp), embedded under
+  /// "analysis"; empty: none.
+  std::string analysis_json;
   /// Embed the particles when a packing is passed to run_record_json. write_packing(Json)
   /// always embeds them (that is what the json output format is).
   bool embed_particles = false;
