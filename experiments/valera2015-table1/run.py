@@ -360,6 +360,13 @@ def main():
             "vf_container_absdiff": abs(vf_cont_np - m["volume_fraction_container"]),
             "particle0_offset_from_centre": centre_dev,
         }
+        an = rec["analysis"]  # frontpack's own analysis (core/metrics/packing_analysis), issue 3
+        for form in ("per_particle", "per_contact"):
+            for k, v in enumerate(sorted(an["fabric"][form]["eigenvalues"], reverse=True)):
+                row[f"fabric_{form}_{k + 1}"] = v
+        for axis in an["homogeneity"]["axes"]:
+            row[f"ks_fp_{axis['axis']}"] = axis["sqrt_n_d"]
+        row["vf_core"] = an["volume_fraction"]["core"]["value"]
         if g.type == "box":
             ext = g.hi - g.lo
             rmax = r.max()
@@ -494,9 +501,8 @@ def write_results(rows, checks, geoms, machine, commit, dirty, version, fp, fp_s
     add(f"* seeds {SEEDS[0]}..{SEEDS[-1]} for every scene with its own settings (the defaults, `default` below); "
         f"seeds {PAPER_SEEDS[0]}..{PAPER_SEEDS[-1]} for the two cubes with the paper's settings (`paper` below), "
         f"i.e. the scene with this line appended:\n\n  `{PAPER_PACKER.strip()}`\n\n"
-        "  (random front particle, first valid position, neighbour pairs unsorted, which frontpack calls `index` "
-        "but which is neighbour-grid order, see the discussion; no wall bodies, one radius drawn at a time, every "
-        "packed particle a contact body). To locate an anisotropy of those packings, the paper settings are also "
+        "  (random front particle, first valid position, neighbour pairs in particle-index order, no wall bodies, "
+        "one radius drawn at a time, every packed particle a contact body). To locate an anisotropy of those packings, the paper settings are also "
         f"run with one lever changed at a time (seeds {VARIANT_SEEDS[0]}..{VARIANT_SEEDS[-1]}; see homogeneity). The paper's containment rule "
         "(a particle is inside if its centre is, Sect. 2) is NOT reproduced: frontpack always keeps whole "
         "particles inside the container.")
@@ -778,14 +784,12 @@ def write_results(rows, checks, geoms, machine, commit, dirty, version, fp, fp_s
         f"{min(kd[3]):.2f}-{max(kd[3]):.2f}, interior {min(kdi[3]):.2f}-{max(kdi[3]):.2f} ({kdi[1]} of {kdi[2]} "
         "runs above): with radii from 2 to 8 the centre density follows the local size mix, and the largest "
         "radii are over-represented near the walls (first/last fifth ratios above 1 in the table). With the "
-        "paper's settings the cubes are anisotropic: the mean radius in the last fifth along z is "
-        f"{dp[1]['z']:.3f} x the mean in the D_B cube ({dp[0]['z']:.3f} in the first fifth), the statistics rank "
-        f"z > y > x ({dp[2]['z']:.1f}, {dp[2]['y']:.1f}, {dp[2]['x']:.1f}). The one-lever variants locate it: "
-        "with `pair_order: nearest` or `candidate: closest` the asymmetry between the two ends disappears. With "
-        "`pair_order: index` frontpack takes the neighbours in neighbour-grid order (cells flattened x fastest, "
-        "z slowest; `front/advancing_front.hpp`, `gather_neighbours`), not by particle index, and `candidate: "
-        "first` always keeps the first valid root; the ranking z > y > x matches that flattening order, so a "
-        "deterministic enumeration bias is the likely cause. The paper's own choice is \"any element\", so "
+        f"paper's settings the D_B cube's statistics are {dp[2]['x']:.1f}, {dp[2]['y']:.1f}, {dp[2]['z']:.1f} (x, y, z), "
+        f"its mean radius in the first and last fifth along z {dp[0]['z']:.3f} and {dp[1]['z']:.3f} x the mean; the "
+        "one-lever variants show which lever moves them (table above). (An earlier run of this experiment found "
+        "`pair_order: index` taking neighbours in neighbour-grid order, a direction bias; frontpack now sorts them "
+        "by particle index.) "
+        "The paper's own choice is \"any element\", so "
         "its 0.69-0.95 are not reproduced by our `paper` settings"
         + (lambda k: f"; with `front: fifo` instead of `random` the cube 0.9 statistics are {min(k.values()):.2f}-"
            f"{max(k.values()):.2f} (mean per axis, {len(VARIANT_SEEDS)} seeds)"
@@ -797,12 +801,13 @@ def write_results(rows, checks, geoms, machine, commit, dirty, version, fp, fp_s
         f"rattlers (z < 3 with walls) against at most {pct(max(r['rattler_fraction'] for r in rows if r['scene'] != 'mesh'), 2)} % "
         f"elsewhere. In seed 1, {mc['rattlers_count']} rattlers, {mc['rattlers_off_wall']} of them not touching the "
         f"surface; {mc['rattlers_plane_only']} of those are tangent (within 1e-9 r) to the plane of a facet within "
-        f"3 r while their gap to the surface itself is larger (median {mc['plane_only_gap_median']:.3f} r). "
-        "frontpack's mesh walls are the facets' infinite planes (`MeshContainer::walls_near` returns "
-        "`Wall::plane` per facet): on a non-convex mesh a particle can be built tangent to a facet's plane "
-        "beyond the facet's edges, i.e. touching nothing there, and is then left with two real contacts. "
-        "On the convex box and cylinder a tangent point on a face's plane inside the container is on the face, "
-        "so they are not affected.")
+        f"3 r while their gap to the surface itself is larger. Mesh facets are offered to the solver as their "
+        "planes, and a position tangent to a facet's plane must also touch the container itself "
+        "(`touches_boundary`, `front/advancing_front.hpp`): an earlier run of this experiment found 6.0 % "
+        "rattlers, most of them tangent to a facet's plane beyond the facet's edges, which led to that check. "
+        "The rattlers left all touch the surface. Two causes are possible and not separated here: frontpack "
+        "counts at most one wall contact per particle, so a particle built against two facets and one particle "
+        "counts 2 contacts; and concave edges and vertices of the mesh are not offered as wall bodies.")
     mu = {k: mstat([r["rate"] for r in sel(rows, k, "default")])[0] for k, _, _, _ in SCENES}
     add("* **Speed.** Default settings: " + ", ".join(f"{k} {mu[k]:,.0f} particles/s" for k in mu)
         + f" (pack time from the record, one thread; the machine has {machine['nproc']} cores shared with "
@@ -818,6 +823,29 @@ def write_results(rows, checks, geoms, machine, commit, dirty, version, fp, fp_s
         + f" frontpack's \"with walls\" coordination counts one wall contact per particle, also for the {multi} "
         "particles (seed-1 packings above) that touch two or more walls; counting one contact per wall changes the "
         "mean only in the fourth decimal here.")
+    add("")
+    add("## Quality indicators from frontpack's analysis (paper 002, Sect. 4)")
+    add("")
+    add("From the `analysis` section of each run record (`frontpack pack` computes it with the same code as "
+        "`frontpack analyze`): fabric tensor eigenvalues in decreasing order, per particle (paper 002 Eq. 1) and "
+        "per contact (paper 000 Eq. 17); the K-S homogeneity statistic sqrt(n) D_n of the centres against uniform "
+        "on each side shrunk by r_max (frontpack's definition; the tables above also give the observed-range and "
+        "interior versions); the VF of the core (container shrunk by 2 r_max). Mean over the seeds. Paper 002 "
+        "reports fabric eigenvalues (0.335, 0.334, 0.331) for packing 2 and (0.335, 0.333, 0.332) for packing 4, "
+        "K-S statistics 0.69-0.95 (threshold 1.358) and mean coordination 6.31.")
+    add("")
+    add("| scene | settings | fabric per particle | fabric per contact | K-S x | K-S y | K-S z | z | VF core |")
+    add("|---|---|---|---|---|---|---|---|---|")
+    for key, _, _, _ in SCENES:
+        for settings in ("default", "paper"):
+            rs = sel(rows, key, settings)
+            if not rs:
+                continue
+            mean = lambda name: sum(r[name] for r in rs) / len(rs)
+            fpp = ", ".join(f"{mean(f'fabric_per_particle_{k}'):.3f}" for k in (1, 2, 3))
+            fpc = ", ".join(f"{mean(f'fabric_per_contact_{k}'):.3f}" for k in (1, 2, 3))
+            ks = " | ".join(f"{mean(f'ks_fp_{ax}'):.2f}" for ax in "xyz")
+            add(f"| {key} | {settings} | ({fpp}) | ({fpc}) | {ks} | {mean('z'):.3f} | {mean('vf_core'):.4f} |")
     add("")
     with open(os.path.join(HERE, "RESULTS.md"), "w") as f:
         f.write("\n".join(L).rstrip() + "\n")
