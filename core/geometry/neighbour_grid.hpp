@@ -3,9 +3,9 @@
 // distributions (r_max / r_min above a threshold) a hierarchy of such grids, one per octave of
 // radius, so that a query touches O(1) cells and O(1) particles whatever the radius ratio
 // (the O(n) argument of paper 002, Sect. 6, needs the neighbour search to be O(1)).
-// A cell holds its first kInline particles in place (id, centre, radius) and links the rest
-// (next per particle): a query reads the cells of a row as one contiguous block, which at 10^6
-// particles is what the packing's time was spent waiting for. Fine levels are also listed per top-level cell
+// Cells hold singly linked lists (head per cell, next per particle). Each list item carries a
+// copy of its particle's centre and radius, so a query reads one cache line per particle rather
+// than chasing ids into the packing's arrays. Fine levels are also listed per top-level cell
 // ("block"): a big query into a sparse fine level walks those lists instead of empty fine cells
 // (at r_max/r_min = 50 that was 86 % of the packing time and 0.5 GB of cells).
 #include <algorithm>
@@ -24,7 +24,7 @@ class NeighbourGrid {
   /// `domain`: where centres can be; radii in [r_min, r_max]; cells of `cell_factor * r_max`
   /// of their level; one level per octave of radius when r_max / r_min > `hierarchy_ratio`.
   NeighbourGrid(const Aabb<D>& domain, double r_min, double r_max, double cell_factor = 2.0,
-                double hierarchy_ratio = 4.0, std::size_t max_cells_per_level = std::size_t(1) << 26) {
+                double hierarchy_ratio = 4.0, std::size_t max_cells_per_level = std::size_t(1) << 24) {
     if (!(r_min > 0.0) || !(r_max >= r_min)) throw std::invalid_argument("NeighbourGrid: need 0 < r_min <= r_max");
     if (!(cell_factor >= 1.0)) throw std::invalid_argument("NeighbourGrid: cell_factor must be >= 1");
     int levels = 1;
@@ -34,12 +34,15 @@ class NeighbourGrid {
     for (int l = 0; l < levels; ++l) {
       Level& L = levels_[l];
       L.r_top = r_max / std::ldexp(1.0, l);  // level l holds radii in (r_top/2, r_top]; the last level takes the rest
-      // A fine level needs its fine cells only for queries of its own size; its memory is capped
-      // at kFineCellsPerBlock cells per top-level cell (tiny particles in a huge domain).
+      // A fine level needs its fine cells only for queries of its own size: it has at most
+      // kFineCellsPerBlock cells per top-level cell, and all fine levels together at most
+      // max_cells_per_level (memory follows the domain, not N: 10^4 spheres at r_max/r_min = 50
+      // in a box of 180 r_max took 0.8 GB before this cap).
       const std::size_t cap = l == 0 ? max_cells_per_level
-                                     : std::min(max_cells_per_level, kFineCellsPerBlock * levels_[0].cells.count());
+                                     : std::min(max_cells_per_level / static_cast<std::size_t>(levels - 1),
+                                                kFineCellsPerBlock * levels_[0].cells.count());
       L.cells = Lattice(domain, cell_factor * L.r_top, cap);
-      L.slots.assign(L.cells.count(), Cell{});
+      L.head.assign(L.cells.count(), -1);
       if (l > 0) L.block_head.assign(levels_[0].cells.count(), -1);
     }
   }
@@ -54,14 +57,9 @@ class NeighbourGrid {
     Item& it = items_[id];
     it.c = c;
     it.r = r;
-    Cell& cell = L.slots[L.cells.index_of(c)];
-    if (cell.count < kInline) {
-      cell.in_place[cell.count] = it;
-      cell.ids[cell.count++] = id;
-    } else {
-      it.next = cell.more;
-      cell.more = id;
-    }
+    const std::size_t k = L.cells.index_of(c);
+    it.next = L.head[k];
+    L.head[k] = id;
     if (l > 0) {
       const std::size_t b = levels_[0].cells.index_of(c);
       it.next_in_block = L.block_head[b];
@@ -91,7 +89,7 @@ class NeighbourGrid {
   /// Memory held by the grid, in bytes (for the run record).
   std::size_t memory_bytes() const {
     std::size_t b = items_.capacity() * sizeof(Item);
-    for (const Level& L : levels_) b += L.slots.capacity() * sizeof(Cell) + L.block_head.capacity() * sizeof(int);
+    for (const Level& L : levels_) b += (L.head.capacity() + L.block_head.capacity()) * sizeof(int);
     return b;
   }
 
@@ -174,18 +172,10 @@ class NeighbourGrid {
     int next_in_block = -1;  // next particle of the same (fine) level in the same top-level cell
   };
 
-  static constexpr int kInline = 4;  // ~2.4 particles per cell for U[r, 2r] at VF 0.6 (cells 2 r_max)
-  struct Cell {
-    Item in_place[kInline];
-    int ids[kInline] = {-1, -1, -1, -1};
-    int count = 0;  // particles held in place (at most kInline)
-    int more = -1;  // first of the others, linked through Item::next
-  };
-
   struct Level {
     double r_top = 0;
     Lattice cells;
-    std::vector<Cell> slots;      // per cell of `cells`
+    std::vector<int> head;        // per cell of `cells`
     std::vector<int> block_head;  // per cell of level 0's lattice (fine levels only)
   };
 
@@ -207,9 +197,7 @@ class NeighbourGrid {
         }
       }
       L.cells.for_each_cell(from, to, [&](std::size_t k) {
-        const Cell& cell = L.slots[k];
-        for (int q = 0; q < cell.count; ++q) f(cell.ids[q], cell.in_place[q]);
-        for (int id = cell.more; id >= 0; id = items_[id].next) f(id, items_[id]);
+        for (int id = L.head[k]; id >= 0; id = items_[id].next) f(id, items_[id]);
       });
     }
   }
