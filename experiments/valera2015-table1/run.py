@@ -458,6 +458,15 @@ def main():
         plot_ok = False
         plot_note = getattr(e, "stderr", "") or str(e)
 
+    # The figures of `frontpack analyze --plots` for the default cube 0.9, seed 1 (issue 3).
+    figs = os.path.join(HERE, "figures")
+    os.makedirs(figs, exist_ok=True)
+    cube1 = os.path.join(tmp, "cube-analyze-1.csv")
+    sh(["flock", LOCK, fp, "pack", os.path.join(REPO, "scenes/valera-cube.yaml"), "--seed", "1",
+        "-q", "-o", cube1])
+    sh(["flock", LOCK, fp, "analyze", cube1, "--scene", os.path.join(REPO, "scenes/valera-cube.yaml"),
+        "--plots", figs, "--json", os.path.join(figs, "analysis-seed1.json"), "-q"])
+
     if not keep:
         shutil.rmtree(tmp)
     elapsed = time.time() - t_start
@@ -713,6 +722,15 @@ def write_results(rows, checks, geoms, machine, commit, dirty, version, fp, fp_s
         add("Particle-particle contacts per particle, seed 1 (from `coordination_hist.csv`, drawn by `plot.py`).\n")
     elif plot_note:
         add(f"_plot.py failed: {plot_note.strip().splitlines()[-1] if plot_note.strip() else '?'}_\n")
+    add("## Figures of `frontpack analyze` (cube 0.9, defaults, seed 1)\n")
+    add("`frontpack pack scenes/valera-cube.yaml --seed 1 -o cube.csv` then `frontpack analyze cube.csv --scene "
+        "scenes/valera-cube.yaml --plots figures --json figures/analysis-seed1.json` (every figure's numbers are in "
+        "that JSON). VF against the reference-sphere radius (it falls from the seed point outwards: the packing is "
+        "densest where growth started), the placed radii against U[0.01, 0.02], coordination, z(xi), g(r) and the "
+        "fabric eigenvalues:\n")
+    for name in ("vf_curve", "radii", "coordination", "partial_coordination", "rdf", "fabric"):
+        add(f"![{name}](figures/{name}.png)")
+    add("")
 
     # -- discussion, from the numbers
     add("## Discussion\n")
