@@ -242,7 +242,14 @@ class AdvancingFront {
   /// distribution): three mutually tangent spheres leave a 4th room only if it is not much
   /// smaller than they are, and a tiny one sunk between two big ones leaves none.
   void initialise(Packing<D>& P, PackResult<D>& res) {
-    const std::size_t k = largest_in_pool();
+    // The largest pooled radius the container can hold at all (a thin container may not take r_max).
+    const Vec<D> deep = container_.interior_point();
+    std::size_t k = pool_.size();
+    for (std::size_t q = 0; q < pool_.size(); ++q)
+      if (container_.contains_ball(deep, pool_[q], tol_) && (k == pool_.size() || pool_[q] > pool_[k])) k = q;
+    if (k == pool_.size())
+      throw std::runtime_error("the container cannot hold a first particle of radius " + std::to_string(pool_[0]) +
+                               " at its interior point: container too small for the size distribution");
     start_cluster(P, res, first_centre(pool_[k]), k);
   }
 
@@ -304,13 +311,11 @@ class AdvancingFront {
   }
 
   /// The seed point if the first particle fits there; else the point nearest to it, on the segment
-  /// to the container's interior point, where it fits (a seed point in a corner is a common choice).
+  /// to the container's interior point (where it fits), where it fits (a seed point in a corner
+  /// is a common choice).
   Vec<D> first_centre(double r1) const {
     if (container_.contains_ball(seed_point_, r1, tol_)) return seed_point_;
     const Vec<D> deep = container_.interior_point();
-    if (!container_.contains_ball(deep, r1, tol_))
-      throw std::runtime_error("the container cannot hold a first particle of radius " + std::to_string(r1) +
-                               " at its interior point: container too small for the size distribution");
     double lo = 0, hi = 1;  // fits at hi, not at lo
     for (int it = 0; it < 60; ++it) {
       const double mid = 0.5 * (lo + hi);

@@ -575,15 +575,16 @@ void check_sizes_fit(const Value& radius, const Container<D>& container, const R
     radius.fail(os.str());
   }
   // The bounding box is not enough for a sliver or a mesh with thin parts: the deepest point the
-  // container knows must hold the smallest particle.
+  // container knows must hold the largest particle, or the requested distribution cannot be
+  // packed (radii that fit nowhere would pile up unplaced).
   const Vec<D> deep = container.interior_point();
   const double clearance = -container.signed_distance(deep);
-  if (radii.r_min() > clearance) {
+  if (radii.r_max() > clearance) {
     std::ostringstream os;
     os.precision(6);
-    os << "the smallest particle (radius " << radii.r_min() << ") does not fit in the container ("
-       << container.describe() << "): its deepest point found, (" << deep.transpose() << "), is only "
-       << clearance << " from the boundary";
+    os << (radii.r_min() > clearance ? "no particle" : "the largest particles") << " (radius up to " << radii.r_max()
+       << ") fit nowhere in the container (" << container.describe() << "): its deepest point found, ("
+       << deep.transpose() << "), is only " << clearance << " from the boundary";
     radius.fail(os.str());
   }
 }

@@ -415,6 +415,10 @@ TEST(SceneYamlErrors, BadEnumValuesListTheAllowedOnes) {
   expect_error(kBox3 + "packer: {pair_order: random}\n", 5, "packer.pair_order", {"nearest, index"});
   expect_error(kBox3 + "packer: {contact_bodies: some}\n", 5, "packer.contact_bodies", {"front, all"});
   expect_error(kBox3 + "packer: {probe_smallest: sometimes}\n", 5, "packer.probe_smallest", {});
+  // r_min fits, r_max fits nowhere (the strip is 0.05 thick): the distribution cannot be packed.
+  expect_error("dimension: 2\ncontainer: {type: rectangle, min: [0, 0], max: [1, 0.05]}\n"
+               "particles: {radius: {distribution: uniform, min: 0.005, max: 0.03}}\n",
+               3, "particles.radius", {"the largest particles (radius up to 0.03) fit nowhere", "0.025 from the boundary"});
   expect_error(kBox3 + "packer: {method: mesh}\n", 5, "packer.method", {"front"});
   expect_error(kBox3 + "output:\n  - {format: vtk, path: a.vtk}\n", 6, "output[0].format", {"vtu, yade, lammps, csv, json"});
   expect_error(kBox3 + "output:\n  - {path: a.xyz}\n", 6, "output[0].path", {"extension", "format"});
