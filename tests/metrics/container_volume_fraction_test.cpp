@@ -77,6 +77,28 @@ TEST(RegionVolumeFraction, WholeContainerOfAValidPackingIsExactForEveryShape) {
   }
 }
 
+TEST(RegionVolumeFraction, BallsTangentToAWallUpToRoundingCountAsInside) {
+  // Walls are bodies for the packer: a tangent ball crosses the wall by rounding (~1e-15 r).
+  // That must not send it to sampling; a real crossing (1e-6 r) still must.
+  auto lat = test::simple_cubic(6, 1.0, Vec3(0.5, 0.5, 0.5));  // the outer layers touch the box's walls
+  const BoxContainer<3> box(Vec3::Zero(), Vec3::Constant(6.0));
+  for (Vec3& c : lat.packing.centers) c.x() -= 1e-13;
+  RegionVolumeFraction v = vf_region(lat.packing, box, 0.0);
+  EXPECT_TRUE(v.exact);
+  EXPECT_EQ(v.balls_inside, lat.packing.size());
+  for (Vec3& c : lat.packing.centers) c.x() -= 1e-6;
+  v = vf_region(lat.packing, box, 0.0);
+  EXPECT_EQ(v.balls_cut_exact + v.balls_sampled, 36u);  // the x = 0 layer now really crosses
+
+  // The generic path (cylinder): one ball tangent to the lateral wall, up to rounding.
+  const CylinderContainer cyl(Vec3::Zero(), Vec3(0, 0, 1), 1.0, 2.0);
+  Packing<3> one;
+  one.add(Vec3(0.75 + 1e-13, 0, 1), 0.25);
+  EXPECT_TRUE(vf_region(one, cyl, 0.0).exact);
+  one.centers[0].x() += 1e-6;
+  EXPECT_EQ(vf_region(one, cyl, 0.0).balls_sampled, 1u);
+}
+
 TEST(RegionVolumeFraction, SimpleCubicCoreIsPiOverSix) {
   // Sites at 0.3 + k: the core faces cut spheres, its edges too (those are sampled).
   const auto lat = test::simple_cubic(14, 1.0, Vec3::Constant(0.3));
