@@ -11,12 +11,8 @@ temporary folder (removed at the end; FP_KEEP_TMP=1 keeps it). Every frontpack r
 `flock /tmp/frontpack-bench.lock` so timing runs never overlap with other benchmarks.
 """
 import csv
-import datetime
-import hashlib
 import json
 import os
-import platform
-import shlex
 import shutil
 import statistics
 import subprocess
@@ -24,6 +20,9 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+from runkit import mean, provenance_lines, sd, table  # noqa: E402
 
 import yaml
 
@@ -123,45 +122,12 @@ def run(case, label, lever, scene_path, seed):
     return row
 
 
-def mean(rows, k):
-    return statistics.fmean(r[k] for r in rows)
 
 
-def sd(rows, k):
-    return statistics.stdev(r[k] for r in rows) if len(rows) > 1 else 0.0
-
-
-def table(header, rows):
-    out = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
-    out += ["| " + " | ".join(str(c) for c in r) + " |" for r in rows]
-    return "\n".join(out)
-
-
-def sh(*cmd):
-    try:
-        return subprocess.run(cmd, capture_output=True, text=True, cwd=REPO).stdout.strip()
-    except OSError:
-        return "?"
 
 
 def provenance():
-    model = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "?")
-    memkb = next(int(l.split()[1]) for l in open("/proc/meminfo") if l.startswith("MemTotal"))
-    commit = sh("git", "rev-parse", "--short", "HEAD")
-    tracked = sh("git", "status", "--porcelain", "--untracked-files=no")
-    untracked = sh("git", "status", "--porcelain")
-    state = "clean" if not untracked else ("dirty: modified tracked files" if tracked else "tracked files clean, untracked files present")
-    binary = Path(FRONTPACK)
-    digest = hashlib.sha256(binary.read_bytes()).hexdigest()[:16] if binary.exists() else "?"
-    env = f"FRONTPACK={shlex.quote(os.environ['FRONTPACK'])} " if "FRONTPACK" in os.environ else ""
-    command = env + " ".join(shlex.quote(a) for a in [sys.executable] + sys.argv)
-    return "\n".join([
-        f"Command: `{command}` (run from `{os.getcwd()}`)",
-        "",
-        f"* machine: {sh('nproc')} CPUs (`nproc`), {model}, Linux {platform.release()}, {memkb / 2**20:.1f} GiB memory",
-        f"* date: {datetime.datetime.now().astimezone().strftime('%Y-%m-%d %H:%M %Z')}",
-        f"* repository commit: `{commit}` ({state})",
-        f"* binary: `{FRONTPACK}` ({sh(FRONTPACK, '--version')}, sha256 {digest}…)",
+    return "\n".join(provenance_lines(FRONTPACK, sys.argv) + [
         f"* every run: `flock {LOCK} /usr/bin/time -f '%e %M' frontpack pack SCENE --seed S -o X.csv --record X.json -q`; "
         "all columns from the JSON run record (pack time is `timings.pack`, one core; particles/s = N / pack time). "
         f"A run whose pack time is under {REPEAT_BELOW_S:g} s is repeated ({REPEATS} runs in all) and its pack time is "
