@@ -12,13 +12,9 @@ wrapped in `flock /tmp/frontpack-bench.lock` so timing runs never overlap with o
 and in `/usr/bin/time -f "%e %M"` for the total wall time and the peak memory (KB).
 """
 import csv
-import datetime
-import hashlib
 import json
 import math
 import os
-import platform
-import shlex
 import shutil
 import statistics
 import subprocess
@@ -26,6 +22,9 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+from runkit import mean, provenance_lines, sd, table  # noqa: E402
 
 import yaml
 
@@ -106,7 +105,7 @@ def run(study, config, scene_path, seed, keep_csv=None, **extra):
     if len({key(x[0]) for x in reps}) != 1:
         NONDETERMINISTIC.append((config, seed))
     r = reps[0][0]
-    m, c, t = r["metrics"], r["counters"], r["timings"]
+    m, c = r["metrics"], r["counters"]
     n = r["n"]
     pack = min(x[0]["timings"]["pack"] for x in reps)  # best of the repeats: least disturbed by other load
     row = dict(study=study, config=config, scene=scene_path.name, seed=seed, n=n, repeats=len(reps),
@@ -148,12 +147,6 @@ def radial_profile(csv_path, centre, edges):
 
 
 # ---------------------------------------------------------------- formatting helpers
-def mean(rows, k):
-    return statistics.fmean(r[k] for r in rows)
-
-
-def sd(rows, k):
-    return statistics.stdev(r[k] for r in rows) if len(rows) > 1 else 0.0
 
 
 def med(rows, k):
@@ -202,39 +195,11 @@ def loglog_slope(xs, ys):
     return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sum((a - mx) ** 2 for a in lx)
 
 
-def table(header, rows):
-    out = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
-    out += ["| " + " | ".join(str(c) for c in r) + " |" for r in rows]
-    return "\n".join(out)
-
 
 # ---------------------------------------------------------------- provenance
-def sh(*cmd):
-    try:
-        return subprocess.run(cmd, capture_output=True, text=True, cwd=REPO).stdout.strip()
-    except OSError:
-        return "?"
-
 
 def provenance(argv):
-    model = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "?")
-    memkb = next(int(l.split()[1]) for l in open("/proc/meminfo") if l.startswith("MemTotal"))
-    commit = sh("git", "rev-parse", "--short", "HEAD")
-    tracked = sh("git", "status", "--porcelain", "--untracked-files=no")
-    untracked = sh("git", "status", "--porcelain")
-    state = "clean" if not untracked else ("dirty: modified tracked files" if tracked else "tracked files clean, untracked files present")
-    binary = Path(FRONTPACK)
-    digest = hashlib.sha256(binary.read_bytes()).hexdigest()[:16] if binary.exists() else "?"
-    env = f"FRONTPACK={shlex.quote(os.environ['FRONTPACK'])} " if "FRONTPACK" in os.environ else ""
-    command = env + " ".join(shlex.quote(a) for a in [sys.executable] + argv)
-    return "\n".join([
-        f"Command: `{command}` (run from `{os.getcwd()}`)",
-        "",
-        f"* machine: {sh('nproc')} CPUs (`nproc`), {model}, Linux {platform.release()}, "
-        f"{memkb / 2**20:.1f} GiB memory",
-        f"* date: {datetime.datetime.now().astimezone().strftime('%Y-%m-%d %H:%M %Z')}",
-        f"* repository commit: `{commit}` ({state})",
-        f"* binary: `{FRONTPACK}` ({sh(FRONTPACK, '--version')}, sha256 {digest}…)",
+    return "\n".join(provenance_lines(FRONTPACK, argv) + [
         f"* every run: `flock {LOCK} /usr/bin/time -f '%e %M' frontpack pack SCENE --seed S -o X.csv --record X.json -q`; "
         "pack time, metrics and counters from the JSON run record, total wall time and peak memory (RSS) "
         "from `/usr/bin/time`. The packer is single-threaded: every rate is one core. "
@@ -388,7 +353,6 @@ def write_results(prov, elapsed, valera, million, disks, full2d, ratio7, ratio50
 
     # ---- headline numbers for the summary
     vdef = valera["defaults (pool 4)"]
-    best_vf_cfg = max(valera, key=lambda k: mean(valera[k], "vf_ref"))
     fastest_cfg = max(valera, key=lambda k: mean(valera[k], "pps"))
     both = [k for k in valera if mean(valera[k], "vf_ref") >= T_VALERA_VF and mean(valera[k], "pps") >= T_VALERA_RATE
             and min(r["ks_p"] for r in valera[k]) > KS_ALPHA]
@@ -505,7 +469,7 @@ def write_results(prov, elapsed, valera, million, disks, full2d, ratio7, ratio50
     for name, prof in profiles.items():
         L += [f"**{name}**", "", table(["shell (distance from centre)", "spheres", "solid fraction"],
                                       [[f"{a:.2f} – {b:.2f}", f"{n:,}", f"{v:.4f}"] for a, b, n, v in prof]), ""]
-    pv, pm_ = profiles["Valera cube (side 0.9), defaults, seed 1"], profiles["million box (side 3.1), defaults, N 1M, seed 1"]
+    pm_ = profiles["million box (side 3.1), defaults, N 1M, seed 1"]
     outer = [v for a, b, n, v in pm_ if a >= 0.999]
     L += [f"In the million box the shells between 1.0 and 1.5 from the seed point hold a solid fraction of "
           f"{min(outer):.4f} to {max(outer):.4f}, against {pm_[1][3]:.4f} for the shell {pm_[1][0]:.1f} – {pm_[1][1]:.1f}; "
