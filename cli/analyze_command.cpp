@@ -8,11 +8,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cli/packing_input.hpp"
 #include "core/io/analysis_json.hpp"
 #include "core/io/atomic_file.hpp"
-#include "core/io/output_format.hpp"
-#include "core/io/packing_readers.hpp"
-#include "core/io/scene_yaml.hpp"
 #include "core/metrics/packing_analysis.hpp"
 
 #ifndef FRONTPACK_PLOT_SCRIPT
@@ -72,8 +70,7 @@ int analyze(const std::optional<Scene>& scene, const Packing<D>& P, const Analyz
   const RadiusDistribution* dist = nullptr;
   AnalysisOptions opt;
   if (scene) {
-    if constexpr (D == 2) container = scene->container2.get();
-    else container = scene->container3.get();
+    container = scene->container<D>();
     dist = scene->radii.get();
     opt.contact_tolerance = scene->packer.contact_tolerance;
   }
@@ -99,40 +96,20 @@ int analyze(const std::optional<Scene>& scene, const Packing<D>& P, const Analyz
 }  // namespace
 
 int run_analyze_command(const AnalyzeCommandOptions& o) {
-  std::optional<Scene> scene;
-  OutputFormat format;
-  int dimension = 0;
+  PackingInput in;
   try {
-    if (!o.scene_path.empty()) scene = load_scene(o.scene_path);
-    format = o.format.empty() ? format_from_extension(o.packing_path) : parse_output_format(o.format);
-    dimension = packing_file_dimension(format, o.packing_path);
     if (!o.plots_dir.empty() && !std::filesystem::is_directory(o.plots_dir))
       throw std::runtime_error("plots folder '" + o.plots_dir + "' does not exist");
-    for (const std::string& p : {o.json_path}) {
-      const auto parent = std::filesystem::path(p).parent_path();
-      if (!p.empty() && !parent.empty() && !std::filesystem::is_directory(parent))
-        throw std::runtime_error("output folder '" + parent.string() + "' does not exist (for --json " + p + ")");
-    }
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-    return 2;
-  }
-  if (scene && dimension != scene->dimension) {
-    std::fprintf(stderr, "frontpack: error: %s holds a %dD packing but %s is a %dD scene\n", o.packing_path.c_str(),
-                 dimension, o.scene_path.c_str(), scene->dimension);
-    return 2;
-  }
-  Packing<2> p2;
-  Packing<3> p3;
-  try {
-    if (dimension == 2) p2 = read_packing<2>(format, o.packing_path);
-    else p3 = read_packing<3>(format, o.packing_path);
-  } catch (const std::exception& e) {  // a malformed packing file: the reader names file and line
+    const auto json_parent = std::filesystem::path(o.json_path).parent_path();
+    if (!o.json_path.empty() && !json_parent.empty() && !std::filesystem::is_directory(json_parent))
+      throw std::runtime_error("output folder '" + json_parent.string() + "' does not exist (for --json " + o.json_path + ")");
+    in = read_packing_input(o.packing_path, o.format, o.scene_path);
+  } catch (const std::exception& e) {  // the scene parser and the readers name file, line and key
     std::fprintf(stderr, "frontpack: error: %s\n", e.what());
     return 2;
   }
   try {
-    return dimension == 2 ? analyze<2>(scene, p2, o) : analyze<3>(scene, p3, o);
+    return in.dimension == 2 ? analyze<2>(in.scene, in.packing2, o) : analyze<3>(in.scene, in.packing3, o);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "frontpack: error: %s\n", e.what());
     return 1;

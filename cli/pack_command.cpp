@@ -76,14 +76,8 @@ class ProgressLine {
 };
 
 template <int D>
-const Container<D>& container_of(const Scene& s) {
-  if constexpr (D == 2) return *s.container2;
-  else return *s.container3;
-}
-
-template <int D>
 int run(const Scene& scene, const PackCommandOptions& o) {
-  const Container<D>& container = container_of<D>(scene);
+  const Container<D>& container = *scene.container<D>();
   ProgressLine progress(o.progress);
   ProgressFn progress_fn;
   if (progress.on()) progress_fn = [&](std::uint64_t n, double t, double vf) { progress(n, t, vf); };

@@ -3,9 +3,7 @@
 #include <cstdio>
 #include <exception>
 
-#include "core/io/output_format.hpp"
-#include "core/io/packing_readers.hpp"
-#include "core/io/scene_yaml.hpp"
+#include "cli/packing_input.hpp"
 #include "core/metrics/validate.hpp"
 
 namespace fp {
@@ -13,10 +11,7 @@ namespace {
 
 template <int D>
 int validate(const Scene& scene, const Packing<D>& P, const ValidateCommandOptions& o) {
-  const Container<D>& container = [&]() -> const Container<D>& {
-    if constexpr (D == 2) return *scene.container2;
-    else return *scene.container3;
-  }();
+  const Container<D>& container = *scene.container<D>();
   const double tol = o.tolerance >= 0 ? o.tolerance : scene.packer.contact_tolerance;
   const ValidationReport r = validate_packing<D>(P, container, scene.radii.get(), tol);
   // An empty packing has no radii to test: that is not evidence against the distribution.
@@ -47,28 +42,18 @@ int validate(const Scene& scene, const Packing<D>& P, const ValidateCommandOptio
 }  // namespace
 
 int run_validate_command(const ValidateCommandOptions& o) {
-  Scene scene;
-  OutputFormat format;
-  int dimension = 0;
+  PackingInput in;
   try {
-    scene = load_scene(o.scene_path);
-    format = o.format.empty() ? format_from_extension(o.packing_path) : parse_output_format(o.format);
-    dimension = packing_file_dimension(format, o.packing_path);
+    in = read_packing_input(o.packing_path, o.format, o.scene_path);
+  } catch (const std::exception& e) {  // the scene parser and the readers name file, line and key
+    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
+    return 2;
+  }
+  try {
+    return in.dimension == 2 ? validate<2>(*in.scene, in.packing2, o) : validate<3>(*in.scene, in.packing3, o);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-    return 2;
-  }
-  if (dimension != scene.dimension) {
-    std::fprintf(stderr, "frontpack: error: %s holds a %dD packing but %s is a %dD scene\n", o.packing_path.c_str(),
-                 dimension, o.scene_path.c_str(), scene.dimension);
-    return 2;
-  }
-  try {
-    if (dimension == 2) return validate<2>(scene, read_packing<2>(format, o.packing_path), o);
-    return validate<3>(scene, read_packing<3>(format, o.packing_path), o);
-  } catch (const std::exception& e) {  // a malformed packing file: the reader names file and line
-    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-    return 2;
+    return 1;
   }
 }
 

@@ -19,9 +19,7 @@ const char* to_string(StopReason r) {
 template <int D>
 PackResult<D> pack(const Scene& scene, const ProgressFn& progress) {
   if (scene.dimension != D) throw std::invalid_argument("pack<D>: scene dimension mismatch");
-  const Container<D>* container = nullptr;
-  if constexpr (D == 2) container = scene.container2.get();
-  else container = scene.container3.get();
+  const Container<D>* container = scene.container<D>();
   if (!container || !scene.radii) throw std::invalid_argument("pack: scene has no container or no size distribution");
   if (scene.packer.method != "front") throw std::invalid_argument("pack: unknown method '" + scene.packer.method + "'");
   AdvancingFront<D> front(*container, *scene.radii, scene.packer, scene.stop, scene.seed);

@@ -62,6 +62,12 @@ struct Scene {
   std::uint64_t seed = 1;
   ContainerPtr<2> container2;  ///< set when dimension == 2
   ContainerPtr<3> container3;  ///< set when dimension == 3
+  /// The container of dimension D (null if the scene has the other dimension).
+  template <int D>
+  const Container<D>* container() const {
+    if constexpr (D == 2) return container2.get();
+    else return container3.get();
+  }
   RadiusDistributionPtr radii;
   PackerOptions packer;
   StopCriteria stop;

@@ -53,9 +53,7 @@ void pack_and_check(const std::string& name, const std::string& yaml, const Sign
   EXPECT_GT(z, e.min_bulk_coordination) << name << ": bulk of " << bulk << " particles";
 
   // The container measure the library reports agrees with the closed form (or brute force).
-  const fp::Container<D>* c = nullptr;
-  if constexpr (D == 2) c = scene.container2.get();
-  else c = scene.container3.get();
+  const fp::Container<D>* c = scene.template container<D>();
   EXPECT_NEAR(c->measure(), measure, 1e-9 * measure) << name;
   // The container's own distance agrees that every particle is inside (what the packer used).
   double worst = -1;

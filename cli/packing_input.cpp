@@ -1,0 +1,25 @@
+#include "cli/packing_input.hpp"
+
+#include <stdexcept>
+
+#include "core/io/output_format.hpp"
+#include "core/io/packing_readers.hpp"
+#include "core/io/scene_yaml.hpp"
+
+namespace fp {
+
+PackingInput read_packing_input(const std::string& packing_path, const std::string& format,
+                                const std::string& scene_path) {
+  PackingInput in;
+  if (!scene_path.empty()) in.scene = load_scene(scene_path);
+  const OutputFormat f = format.empty() ? format_from_extension(packing_path) : parse_output_format(format);
+  in.dimension = packing_file_dimension(f, packing_path);
+  if (in.scene && in.dimension != in.scene->dimension)
+    throw std::runtime_error(packing_path + " holds a " + std::to_string(in.dimension) + "D packing but " + scene_path +
+                             " is a " + std::to_string(in.scene->dimension) + "D scene");
+  if (in.dimension == 2) in.packing2 = read_packing<2>(f, packing_path);
+  else in.packing3 = read_packing<3>(f, packing_path);
+  return in;
+}
+
+}  // namespace fp

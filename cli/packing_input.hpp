@@ -1,0 +1,24 @@
+#pragma once
+// What `validate` and `analyze` read: a packing file and, optionally, the scene it fills.
+#include <optional>
+#include <string>
+
+#include "core/geometry/packing.hpp"
+#include "core/io/scene.hpp"
+
+namespace fp {
+
+struct PackingInput {
+  std::optional<Scene> scene;  ///< when a scene path was given
+  int dimension = 3;           ///< of the packing (and of the scene)
+  Packing<2> packing2;         ///< set when dimension == 2
+  Packing<3> packing3;         ///< set when dimension == 3
+};
+
+/// Loads the scene (if scene_path is not empty) and the packing (format: explicit, else from the
+/// extension), and checks that their dimensions agree. Throws std::runtime_error naming the file
+/// (and line, key) on any bad input: the commands report it with exit code 2.
+PackingInput read_packing_input(const std::string& packing_path, const std::string& format,
+                                const std::string& scene_path);
+
+}  // namespace fp
