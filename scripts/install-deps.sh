@@ -3,7 +3,7 @@
 #   scripts/install-deps.sh          what `frontpack pack` needs to build
 #   scripts/install-deps.sh --test   plus GoogleTest, Google Benchmark and the Python modules the tests use
 set -euo pipefail
-packages=(build-essential cmake libeigen3-dev libcgal-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev)
+packages=(build-essential cmake libeigen3-dev libcgal-dev libfcl-dev libccd-dev libnlopt-cxx-dev libnlopt-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev)
 if [[ "${1:-}" == "--test" ]]; then
   # python3-vtk9: the VTU files are read back by VTK itself; numpy: independent cross-checks;
   # matplotlib: `frontpack analyze --plots`.

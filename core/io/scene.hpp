@@ -2,6 +2,7 @@
 // A scene: everything a run needs, read from a YAML file (core/io/scene_yaml.cpp).
 // Plain data plus the container and distribution objects the file describes.
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,6 +25,18 @@ enum class ContactBodies { All, Front };
 /// Widest size ratio for which probe_smallest is on by default (measured: experiments/front-levers).
 inline constexpr double kProbeRatioLimit = 8.0;
 
+/// The potential-minimisation contact solver (paper 004, Eq. 4): the speed-accuracy knobs,
+/// measured in experiments/perez-morales2016.
+struct MinimisationOptions {
+  /// "newton" (Newton on the contact equations ω_i = 0 from each start, SLSQP where it fails),
+  /// or an NLopt algorithm: "slsqp" (Σω² with gradients), "lbfgs" (Σω² with gradients),
+  /// "nelder-mead" (Σ|ω|, the paper's choice), "cobyla" (Σ|ω|), "sbplx" (Σ|ω|).
+  std::string algorithm = "slsqp";
+  double gap_tolerance = 1e-6;  ///< accept a solution when every |ω_i| <= gap_tolerance * size
+  int max_evaluations = 200;    ///< objective evaluations per minimisation (each solve runs two)
+  bool polish = true;           ///< finish with Newton steps on ω_i(x) = 0 (gradients needed)
+};
+
 struct PackerOptions {
   std::string method = "front";              ///< the advancing front (the only method of this issue)
   FrontPick front_pick = FrontPick::ClosestToSeed;
@@ -41,6 +54,7 @@ struct PackerOptions {
   double grid_cell_factor = 2.0;             ///< grid cell size = factor * r_max of its level
   double hierarchical_grid_ratio = 4.0;      ///< use the hierarchical grid when r_max / r_min exceeds this
   std::optional<std::vector<double>> seed_point;  ///< where growth starts (default: container interior point)
+  MinimisationOptions minimisation;          ///< non-spherical particles only
 };
 
 struct StopCriteria {
@@ -53,6 +67,43 @@ struct StopCriteria {
 struct OutputSpec {
   std::string format;  ///< vtu | yade | lammps | csv | json
   std::string path;    ///< relative paths are relative to the working directory
+};
+
+/// Where a value was written in the scene file, so that errors found later (shape families are
+/// resolved in shapes/, above core/) still name the file, line and key (SceneError).
+struct SourceSpot {
+  std::string file;
+  int line = 0;    ///< 1-based; 0 = unknown
+  int column = 0;
+  std::string key; ///< dotted path, e.g. "particles[0].aspect_ratio"
+};
+
+/// A shape family's parameters as written in the scene (everything but the common template keys),
+/// resolved into a shape by shapes/shape_registry.hpp.
+struct ShapeParameters {
+  std::map<std::string, double> numbers;                              ///< aspect_ratio: 0.5
+  std::map<std::string, std::vector<double>> lists;                     ///< radii: [1, 0.5]
+  std::map<std::string, std::vector<std::vector<double>>> point_lists;  ///< vertices: [[0,0,0], ...]
+  std::map<std::string, std::string> strings;                           ///< preset: cube
+  std::map<std::string, SourceSpot> spots;                              ///< per key above: where it was written
+  SourceSpot spot;                                                      ///< the template itself
+};
+
+/// How the orientation of each particle of a template is drawn.
+struct OrientationSpec {
+  enum class Kind { Random, Fixed } kind = Kind::Random;  ///< uniform random rotation (Haar), or one fixed rotation
+  std::vector<double> fixed;  ///< Fixed: 2D [angle in degrees]; 3D [w, x, y, z] unit quaternion
+};
+
+/// One particle template: a shape family, its parameters, a size distribution on a named
+/// dimension and an orientation distribution. `fraction` weights templates by number.
+struct ParticleTemplateSpec {
+  std::string family;                                  ///< "sphere", "spherocylinder", "polyhedron", ...
+  ShapeParameters parameters;
+  std::string size_on = "circumscribed_radius";         ///< which dimension `size` is drawn on
+  RadiusDistributionPtr size;                           ///< the size distribution (on that dimension)
+  OrientationSpec orientation;
+  double fraction = 1.0;                                ///< share by number among the templates
 };
 
 struct Scene {
@@ -68,7 +119,10 @@ struct Scene {
     if constexpr (D == 2) return container2.get();
     else return container3.get();
   }
-  RadiusDistributionPtr radii;
+  RadiusDistributionPtr radii;  ///< spheres/disks: the radius distribution (null for a shape scene)
+  /// Non-spherical particles (`particles: [{shape: ..., size: ..., ...}, ...]`); empty for a
+  /// sphere/disk scene, which keeps the sphere fast path (no FCL, no NLopt).
+  std::vector<ParticleTemplateSpec> particle_templates;
   PackerOptions packer;
   StopCriteria stop;
   std::vector<OutputSpec> outputs;
