@@ -1,0 +1,52 @@
+#pragma once
+// Shape families by name: the scene's `shape: <family>` resolves here. A family is a factory
+// from the template's parameters to a prototype (the shape at circumscribed radius 1) plus its
+// named dimensions at that scale, on which a size distribution may be stated ("radius",
+// "length", ...). Adding a shape = its own files + one line in shapes/builtin_shapes.cpp.
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/io/scene.hpp"
+#include "shapes/shape.hpp"
+
+namespace fp {
+
+template <int D>
+struct ShapePrototype {
+  ShapePtr<D> shape;                          ///< circumscribed radius 1
+  std::map<std::string, double> dimensions;   ///< named dimensions at that scale; always has "circumscribed_radius" = 1
+};
+
+template <int D>
+using ShapeFamilyFactory = std::function<ShapePrototype<D>(const ShapeParameters&)>;
+
+class ShapeFamilies {
+ public:
+  /// Every built-in family (registered in shapes/builtin_shapes.cpp).
+  static const ShapeFamilies& builtin();
+
+  /// Registers a family; a null factory means the family does not exist in that dimension.
+  void add(const std::string& name, ShapeFamilyFactory<2> in_2d, ShapeFamilyFactory<3> in_3d);
+
+  bool has(const std::string& name) const { return families_.count(name) != 0; }
+  std::vector<std::string> names() const;
+
+  /// The prototype of a template; throws SceneError (file, line, key) on an unknown family, a
+  /// family missing in dimension D, a bad parameter or a size stated on an unknown dimension.
+  template <int D>
+  ShapePrototype<D> prototype(const ParticleTemplateSpec& spec) const;
+
+ private:
+  struct Family {
+    ShapeFamilyFactory<2> in_2d;
+    ShapeFamilyFactory<3> in_3d;
+  };
+  std::map<std::string, Family> families_;
+};
+
+/// The one place that lists the built-in families (one line each).
+void register_builtin_shapes(ShapeFamilies& families);
+
+}  // namespace fp
