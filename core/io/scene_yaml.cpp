@@ -103,6 +103,11 @@ class Value {
   const YAML::Mark& mark() const { return mark_; }
   const YAML::Node& node() const { return node_; }
   [[noreturn]] void fail(const std::string& message) const { ctx_->fail(mark_, path_, message); }
+  /// Where this value was written, for errors raised after parsing (shapes/).
+  SourceSpot spot() const {
+    const bool known = !mark_.is_null() && mark_.line >= 0;
+    return SourceSpot{ctx_->file, known ? mark_.line + 1 : 0, known ? mark_.column + 1 : 0, path_};
+  }
 
   double number() const {
     if (!node_.IsScalar() || node_.Tag() == "!") fail("expected a number, got " + shown(node_));
@@ -241,6 +246,12 @@ class Map {
   }
 
   bool has(const std::string& key) const { return find(key).has_value(); }
+  /// The keys in the order they were written.
+  Keys keys() const {
+    Keys out;
+    for (const auto& e : entries_) out.push_back(e.name);
+    return out;
+  }
   std::optional<Value> find(const std::string& key) const {
     for (const auto& e : entries_)
       if (e.name == key) return e.value;
@@ -469,11 +480,39 @@ RadiusDistributionPtr parse_distribution(const Value& v, int dimension) {
 
 // --- packer, stop, output ------------------------------------------------------------------
 
+const Keys kMinimisationAlgorithms = {"newton", "slsqp", "lbfgs", "nelder-mead", "cobyla", "sbplx"};
+
+void parse_minimisation(const Value& v, MinimisationOptions& o) {
+  const Map m = v.map();
+  m.check_known({"algorithm", "gap_tolerance", "max_evaluations", "polish"});
+  if (auto x = m.find("algorithm")) o.algorithm = x->choice(kMinimisationAlgorithms);
+  if (auto x = m.find("gap_tolerance")) {
+    const double t = x->number();
+    if (!(t > 0 && t < 0.1))
+      x->fail("must be in (0, 0.1): it is relative to the particle size (got " + x->node().Scalar() + ")");
+    o.gap_tolerance = t;
+  }
+  if (auto x = m.find("max_evaluations")) {
+    const std::uint64_t n = x->unsigned_integer(true);
+    if (n < 10 || n > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
+      x->fail("must be an integer from 10 to " + std::to_string(std::numeric_limits<int>::max()) + " (got " + x->node().Scalar() + ")");
+    o.max_evaluations = static_cast<int>(n);
+  }
+  if (auto x = m.find("polish")) o.polish = x->boolean();
+}
+
+// `shapes`: the scene has particle templates (the minimisation options are used by them only).
 template <int D>
-void parse_packer(const Value& v, const Container<D>& container, PackerOptions& p) {
+void parse_packer(const Value& v, const Container<D>& container, bool shapes, PackerOptions& p) {
   const Map m = v.map();
   m.check_known({"method", "front", "candidate", "pair_order", "contact_bodies", "probe_smallest", "walls", "radius_pool", "contact_tolerance",
-                 "grid_cell_factor", "hierarchical_grid_ratio", "seed_point"});
+                 "grid_cell_factor", "hierarchical_grid_ratio", "seed_point", "minimisation"});
+  if (auto x = m.find("minimisation")) {
+    if (!shapes)
+      x->fail("used by particle templates only ('particles: [{shape: ..., size: ...}]'); this scene has spheres "
+              "('particles: {radius: ...}'), whose contacts are solved in closed form");
+    parse_minimisation(*x, p.minimisation);
+  }
   if (auto x = m.find("method")) p.method = x->choice({"front"});
   if (auto x = m.find("front")) {
     const std::string s = x->choice({"closest", "random", "fifo"});
@@ -589,15 +628,160 @@ void check_sizes_fit(const Value& radius, const Container<D>& container, const R
   }
 }
 
+// --- particle templates ---------------------------------------------------------------------
+
+// The keys every template has; any other key is a parameter of its shape family.
+const Keys kTemplateKeys = {"shape", "size", "size_on", "orientation", "fraction"};
+const std::string kParticleForms =
+    "'{radius: {distribution: ...}}' for spheres, or a list of particle templates "
+    "'[{shape: <family>, size: {distribution: ...}, ...}, ...]'";
+
+// A plain scalar that reads as a number (possibly out of range: number() then says so).
+bool looks_numeric(const YAML::Node& n) {
+  if (!n.IsScalar() || n.Tag() == "!") return false;
+  std::string_view s = n.Scalar();
+  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  double v = 0;
+  const auto res = std::from_chars(s.data(), s.data() + s.size(), v);
+  return !s.empty() && res.ptr == s.data() + s.size() && (res.ec == std::errc() || res.ec == std::errc::result_out_of_range);
+}
+
+// One family parameter: a number, a word (preset: cube), a list of numbers or a list of points.
+void parse_shape_parameter(const Value& v, const std::string& name, ShapeParameters& out) {
+  const std::string what = "a shape parameter is a number, a word, a list of numbers or a list of points";
+  const std::string hint = suggestion(name, kTemplateKeys);
+  const YAML::Node& n = v.node();
+  if (n.IsScalar() && !looks_numeric(n)) {
+    out.strings[name] = n.Scalar();
+    out.spots[name] = v.spot();
+    return;
+  }
+  if (n.IsScalar()) {
+    out.numbers[name] = v.number();
+  } else if (n.IsSequence()) {
+    const auto items = v.list();
+    if (!items.empty() && items.front().node().IsSequence()) {
+      std::vector<std::vector<double>> points;
+      for (const auto& item : items) {
+        if (!item.node().IsSequence())
+          item.fail("expected a point [x, y(, z)] like the first item of the list, got " + shown(item.node()));
+        points.push_back(item.numbers());
+      }
+      out.point_lists[name] = std::move(points);
+    } else {
+      std::vector<double> numbers;
+      for (const auto& item : items) numbers.push_back(item.number());
+      out.lists[name] = std::move(numbers);
+    }
+  } else if (n.IsMap()) {
+    v.fail(what + ", got a mapping" + (hint.empty() ? "; a size distribution goes in 'size'" : hint));
+  } else {
+    v.fail(what + ", got " + shown(n) + hint);
+  }
+  out.spots[name] = v.spot();
+}
+
+template <int D>
+OrientationSpec parse_orientation(const Value& v) {
+  const std::string forms = D == 2 ? "'random' or {fixed: <angle in degrees>}"
+                                   : "'random' or {fixed: [w, x, y, z]} (a unit quaternion)";
+  OrientationSpec o;
+  const YAML::Node& n = v.node();
+  if (n.IsScalar() && n.Tag() != "!") {
+    const std::string s = n.Scalar();
+    if (s != "random") v.fail("unknown orientation '" + s + "'" + suggestion(s, {"random"}) + "; expected " + forms);
+    return o;
+  }
+  if (!n.IsMap()) v.fail("expected " + forms + ", got " + shown(n));
+  const Map m = v.map();
+  m.check_known({"fixed"});
+  const Value f = m.get("fixed", forms);
+  o.kind = OrientationSpec::Kind::Fixed;
+  if constexpr (D == 2) {
+    if (!f.node().IsScalar())
+      f.fail("in 2D the fixed orientation is one angle in degrees, e.g. {fixed: 30}, got " + shown(f.node()));
+    o.fixed = {f.number()};
+  } else {
+    if (!f.node().IsSequence())
+      f.fail("in 3D the fixed orientation is a unit quaternion [w, x, y, z], e.g. {fixed: [1, 0, 0, 0]}, got " + shown(f.node()));
+    std::vector<double> q = f.numbers();
+    if (q.size() != 4) f.fail("a quaternion [w, x, y, z] has 4 components, got " + std::to_string(q.size()));
+    const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    if (!(std::abs(norm - 1.0) <= 1e-6)) {
+      std::ostringstream os;
+      os.precision(9);
+      os << "must be a unit quaternion [w, x, y, z] (norm 1 within 1e-6), got norm " << norm;
+      f.fail(os.str());
+    }
+    for (double& c : q) c /= norm;
+    o.fixed = std::move(q);
+  }
+  return o;
+}
+
+template <int D>
+ParticleTemplateSpec parse_template(const Value& v) {
+  const Map m = v.map();
+  ParticleTemplateSpec t;
+  t.parameters.spot = v.spot();
+  const Value shape = m.get("shape", "the shape family, e.g. sphere, spherocylinder, polygon, polyhedron, ellipsoid, cluster");
+  t.family = shape.string();
+  if (t.family.empty()) shape.fail("must name a shape family");
+  // Parameters before `size`: a misplaced distribution (`radius: {distribution: ...}`) is named as such.
+  // Every key written gets a spot, the common ones too: shapes/ reports an unknown `shape` or
+  // `size_on` at its own line.
+  for (const auto& name : m.keys()) {
+    if (contains(kTemplateKeys, name)) t.parameters.spots[name] = m.find(name)->spot();
+    else parse_shape_parameter(*m.find(name), name, t.parameters);
+  }
+  const Value size = m.get("size", "the size distribution, e.g. {distribution: uniform, min: 1, max: 2}, "
+                                   "drawn on 'size_on' (default circumscribed_radius)");
+  t.size = parse_distribution(size, D);
+  if (!(t.size->r_min() > 0)) size.fail("sizes must be positive (the distribution starts at " + std::to_string(t.size->r_min()) + ")");
+  if (auto x = m.find("size_on")) {
+    t.size_on = x->string();
+    if (t.size_on.empty()) x->fail("must name a dimension of the shape, e.g. circumscribed_radius");
+  }
+  if (auto x = m.find("orientation")) t.orientation = parse_orientation<D>(*x);
+  if (auto x = m.find("fraction")) t.fraction = x->positive();
+  return t;
+}
+
+// The `particles` section: spheres (`{radius: ...}` -> scene.radii, the sphere fast path) or
+// particle templates (a list, or one mapping with `shape`). Returns true for templates.
+template <int D>
+bool parse_particles(const Value& v, const Container<D>& container, Scene& scene) {
+  if (v.node().IsSequence()) {
+    const auto items = v.list();
+    if (items.empty()) v.fail("needs at least one particle template (" + kParticleForms + ")");
+    for (const auto& item : items) {
+      if (!item.node().IsMap()) item.fail("expected a particle template {shape: ..., size: ...}, got " + shown(item.node()));
+      scene.particle_templates.push_back(parse_template<D>(item));
+    }
+    return true;
+  }
+  if (!v.node().IsMap()) v.fail("expected " + kParticleForms + ", got " + shown(v.node()));
+  const Map m = v.map();
+  bool is_template = m.has("shape");
+  if (!m.has("radius"))
+    for (const auto& k : m.keys()) is_template = is_template || contains(kTemplateKeys, k);
+  if (is_template) {
+    scene.particle_templates.push_back(parse_template<D>(v));
+    return true;
+  }
+  m.check_known({"radius"});
+  const Value radius = m.get("radius", "the radius distribution, e.g. {distribution: uniform, min: 1, max: 2}; "
+                                       "or particle templates with 'shape'");
+  scene.radii = parse_distribution(radius, D);
+  check_sizes_fit<D>(radius, container, *scene.radii);
+  return false;
+}
+
 template <int D>
 void parse_body(const Map& root, Scene& scene, const Context& ctx) {
   ContainerPtr<D> container = parse_container<D>(root.get("container", "the region to fill"), ctx);
-  const Map particles = root.get("particles", "with 'radius: {distribution: ...}'").map();
-  particles.check_known({"radius"});
-  const Value radius = particles.get("radius", "the radius distribution, e.g. {distribution: uniform, min: 1, max: 2}");
-  scene.radii = parse_distribution(radius, D);
-  check_sizes_fit<D>(radius, *container, *scene.radii);
-  if (auto p = root.find("packer")) parse_packer<D>(*p, *container, scene.packer);
+  const bool shapes = parse_particles<D>(root.get("particles", kParticleForms), *container, scene);
+  if (auto p = root.find("packer")) parse_packer<D>(*p, *container, shapes, scene.packer);
   if constexpr (D == 3) scene.container3 = std::move(container);
   else scene.container2 = std::move(container);
 }

@@ -15,7 +15,7 @@
 //     cylinder:       base* (centre of the bottom cap), axis (default [0, 0, 1]), radius*, height*
 //     polygon:        vertices* ([[x, y], ...], at least 3)
 //     mesh:           file* (STL/OFF/OBJ, relative to the scene file's folder), scale (default 1)
-//   particles*:
+//   particles*: spheres/disks (the sphere fast path, Scene::radii):
 //     radius*:
 //       distribution*: constant | uniform | normal | lognormal | discrete | histogram | gradation
 //       constant:  value*
@@ -25,11 +25,29 @@
 //       discrete:  values* ([[radius, count weight], ...])
 //       histogram: edges* (radius bin edges), weights* (count weight per bin)
 //       gradation: curve* ([[sieve DIAMETER, % passing], ...]), basis (mass | count, default mass)
+//   particles*: or particle templates (Scene::particle_templates): a list of templates, or one
+//               template mapping (told from the sphere form by its `shape` key):
+//     - shape*: family name (sphere, spherocylinder, cluster, polygon, polyhedron, ellipse,
+//               ellipsoid, ...; resolved and checked by shapes/shape_registry.hpp, not here)
+//       size*: a distribution as under `radius` above, drawn on `size_on`
+//       size_on: the dimension `size` is drawn on (default circumscribed_radius; checked by shapes/)
+//       orientation: random (default) | {fixed: angle in degrees} (2D) | {fixed: [w, x, y, z]} (3D,
+//                    a unit quaternion; normalised when its norm is within 1e-6 of 1, else an error)
+//       fraction: share by number among the templates, > 0 (default 1)
+//       <any other key>: a family parameter: a number (aspect_ratio: 0.5), a list of numbers
+//                    (radii: [1, 0.5]) or a list of points (vertices: [[0, 0], [1, 0], [0, 1]]),
+//                    (ShapeParameters::numbers/lists/point_lists)
+//     Every key written in a template, common ones included, has its file/line/column/dotted key
+//     in ShapeParameters::spots (e.g. "particles[0].aspect_ratio"); ShapeParameters::spot is the
+//     template itself ("particles[0]", or "particles" for the single-mapping form).
 //   packer:
 //     method: front;  front: closest | random | fifo;  candidate: closest | first;
 //     pair_order: nearest | index;  contact_bodies: front | all;  probe_smallest: auto | bool;  walls: bool;  radius_pool: integer >= 1;
 //     contact_tolerance: in (0, 1e-3);  grid_cell_factor: >= 1;  hierarchical_grid_ratio: > 1;
 //     seed_point: [x, y(, z)] inside the container
+//     minimisation (particle templates only; MinimisationOptions):
+//       algorithm: slsqp | lbfgs | nelder-mead | cobyla | sbplx;  gap_tolerance: in (0, 0.1);
+//       max_evaluations: integer >= 10;  polish: bool
 //   stop:
 //     particles: integer > 0 (1e6 accepted);  volume_fraction: in (0, 1);  time: seconds > 0
 //   output: list of {format: vtu | yade | lammps | csv | json (default: from the path's
