@@ -1,0 +1,512 @@
+#include "contact/narrow_phase.hpp"
+
+#include <fcl/geometry/shape/sphere.h>
+#include <fcl/geometry/shape/triangle_p.h>
+#include <fcl/narrowphase/distance.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "contact/segment_distance.hpp"
+#include "shapes/sphere_shape.hpp"
+#include "shapes/spherocylinder_shape.hpp"
+
+namespace fp {
+
+template <int D>
+struct NarrowPhase<D>::FclShape {
+  ShapePtr<D> keep_alive;  // the cache key is the address: keeping the shape alive keeps it unique
+  std::vector<FclPart<D>> parts;
+  std::vector<Ball<D>> balls;     // a cluster's members (its pieces); empty for a convex shape
+  std::vector<Vec<D>> normals;    // polytopes: facet normals (body frame), separating-axis candidates
+  std::vector<Vec<D>> edges;      // polyhedra: edge directions (body frame)
+};
+
+namespace {
+
+/// Unit vector along v, or along `fallback` when v is (numerically) zero.
+template <int D>
+Vec<D> unit_or(const Vec<D>& v, const Vec<D>& fallback) {
+  const double n = v.norm();
+  if (n > 0) return v / n;
+  const double m = fallback.norm();
+  if (m > 0) return fallback / m;
+  Vec<D> e = Vec<D>::Zero();
+  e[0] = 1;
+  return e;
+}
+
+/// Gap of two balls, gradient for the second.
+template <int D>
+Gap<D> ball_gap(const Vec<D>& ca, double ra, const Vec<D>& cb, double rb) {
+  const Vec<D> d = cb - ca;
+  const double n = d.norm();
+  return {n - ra - rb, unit_or<D>(d, Vec<D>::UnitX())};
+}
+
+/// World segment of a spherocylinder particle.
+template <int D>
+std::pair<Vec<D>, Vec<D>> segment_of(const Particle<D>& p) {
+  const auto& s = static_cast<const SpherocylinderShape<D>&>(*p.shape);
+  return {p.pose.to_world(s.end_a()), p.pose.to_world(s.end_b())};
+}
+
+/// Gap of two swept balls (segment + radius; a point segment is a ball): paper 004 Eq. 6 in
+/// distance form, d1(s1, s2) - (r1 + r2).
+template <int D>
+Gap<D> swept_gap(const Vec<D>& a0, const Vec<D>& a1, double ra, const Vec<D>& b0, const Vec<D>& b1, double rb,
+                 const Vec<D>& ca, const Vec<D>& cb) {
+  const SegmentClosest<D> c = closest_points_on_segments<D>(a0, a1, b0, b1);
+  const Vec<D> d = c.on_second - c.on_first;
+  return {d.norm() - ra - rb, unit_or<D>(d, cb - ca)};
+}
+
+template <int D>
+Gap<D> sphere_sphere(const Particle<D>& a, const Particle<D>& b) {
+  return ball_gap<D>(a.pose.position, a.bounding_radius(), b.pose.position, b.bounding_radius());
+}
+
+template <int D>
+Gap<D> capsule_capsule(const Particle<D>& a, const Particle<D>& b) {
+  const auto [a0, a1] = segment_of(a);
+  const auto [b0, b1] = segment_of(b);
+  const double ra = static_cast<const SpherocylinderShape<D>&>(*a.shape).radius();
+  const double rb = static_cast<const SpherocylinderShape<D>&>(*b.shape).radius();
+  return swept_gap<D>(a0, a1, ra, b0, b1, rb, a.pose.position, b.pose.position);
+}
+
+template <int D>
+Gap<D> sphere_capsule(const Particle<D>& a, const Particle<D>& b) {
+  const auto [b0, b1] = segment_of(b);
+  const double rb = static_cast<const SpherocylinderShape<D>&>(*b.shape).radius();
+  const Vec<D>& c = a.pose.position;
+  return swept_gap<D>(c, c, a.bounding_radius(), b0, b1, rb, c, b.pose.position);
+}
+
+/// Shapes made of balls (clusters, spheres): the least gap over member pairs. A capsule member
+/// list is its segment (handled as swept balls).
+template <int D>
+struct SweptPieces {
+  std::vector<Vec<D>> from, to;
+  std::vector<double> radius;
+};
+
+template <int D>
+SweptPieces<D> pieces_of(const Particle<D>& p) {
+  SweptPieces<D> s;
+  if (std::string(p.shape->kind()) == SpherocylinderShape<D>::kKind) {
+    const auto [e0, e1] = segment_of(p);
+    s.from.push_back(e0);
+    s.to.push_back(e1);
+    s.radius.push_back(static_cast<const SpherocylinderShape<D>&>(*p.shape).radius());
+    return s;
+  }
+  for (const Ball<D>& b : p.shape->hull_balls()) {  // a cluster's hull balls are its members
+    const Vec<D> c = p.pose.to_world(b.center);
+    s.from.push_back(c);
+    s.to.push_back(c);
+    s.radius.push_back(b.radius);
+  }
+  return s;
+}
+
+template <int D>
+Gap<D> ball_union_gap(const Particle<D>& a, const Particle<D>& b) {
+  const SweptPieces<D> pa = pieces_of(a), pb = pieces_of(b);
+  Gap<D> best{std::numeric_limits<double>::infinity(), Vec<D>::Zero()};
+  for (std::size_t i = 0; i < pa.radius.size(); ++i)
+    for (std::size_t j = 0; j < pb.radius.size(); ++j) {
+      const Gap<D> g = swept_gap<D>(pa.from[i], pa.to[i], pa.radius[i], pb.from[j], pb.to[j], pb.radius[j],
+                                    a.pose.position, b.pose.position);
+      if (g.value < best.value) best = g;
+    }
+  return best;
+}
+
+/// The 3D transform of a pose (2D: in the z = 0 plane, rotation about z).
+template <int D>
+fcl::Transform3d transform_of(const Pose<D>& pose) {
+  fcl::Transform3d t = fcl::Transform3d::Identity();
+  if constexpr (D == 2) {
+    Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+    R.template topLeftCorner<2, 2>() = pose.rotation;
+    t.linear() = R;
+    t.translation() = Eigen::Vector3d(pose.position[0], pose.position[1], 0.0);
+  } else {
+    t.linear() = pose.rotation;
+    t.translation() = pose.position;
+  }
+  return t;
+}
+
+template <int D>
+fcl::Transform3d part_transform(const Pose<D>& pose, const FclPart<D>& part) {
+  fcl::Transform3d local = fcl::Transform3d::Identity();
+  local.linear() = part.rotation;
+  if constexpr (D == 2) local.translation() = Eigen::Vector3d(part.offset[0], part.offset[1], 0.0);
+  else local.translation() = part.offset;
+  return transform_of(pose) * local;
+}
+
+template <int D>
+Vec<D> project(const Eigen::Vector3d& v) {
+  if constexpr (D == 2) return Vec2(v[0], v[1]);
+  else return v;
+}
+
+
+/// A convex piece through its world-frame support function.
+template <int D>
+struct ConvexPiece {
+  const Particle<D>* particle;
+  const Ball<D>* ball;  // a cluster member, or null for the whole (convex) shape
+  Vec<D> support(const Vec<D>& u) const {
+    if (!ball) return particle->support(u);
+    const double n = u.norm();
+    return particle->pose.to_world(ball->center) + (n > 0 ? Vec<D>(u * (ball->radius / n)) : Vec<D>::Zero());
+  }
+};
+
+/// Signed gap of two overlapping convex pieces without EPA (FCL's EPA aborts on some touching
+/// polytopes: an assertion in gjk_libccd-inl.h). For convex sets the signed distance is
+///   max over unit u of  s(u) = min_{b in B} u.b - max_{a in A} u.a
+/// (separating-axis theorem; minus the penetration depth on overlap), and every s(u) is a lower
+/// bound. Candidates: the centre line, the given axes (polytope facet normals and edge crosses:
+/// exact for polytope pairs), then projected gradient ascent of s on the unit sphere for smooth
+/// shapes (the former fixed-point step u <- (a*(u) - b*(u)) / |...| is a descent step on overlap,
+/// so it never improved s). The gradient for B's position is the best u.
+template <int D>
+Gap<D> support_gap(const ConvexPiece<D>& A, const ConvexPiece<D>& B, const Vec<D>& u0, const std::vector<Vec<D>>& axes,
+                   bool axes_complete) {
+  auto s = [&](const Vec<D>& u) { return u.dot(B.support(-u)) - u.dot(A.support(u)); };
+  Vec<D> best_u = unit_or<D>(u0, Vec<D>::UnitX());
+  double best = s(best_u);
+  for (const Vec<D>& a : axes)
+    for (const double sign : {1.0, -1.0}) {
+      const Vec<D> u = sign * a;
+      const double v = s(u);
+      if (v > best) best = v, best_u = u;
+    }
+  // Projected gradient ascent on the unit sphere: the gradient of s is b*(-u) - a*(u); its
+  // tangential part, in steps doubled on success and halved on failure.
+  double step = 0.5;
+  for (int it = 0; !axes_complete && it < 200 && step > 1e-12; ++it) {
+    const Vec<D> g = B.support(-best_u) - A.support(best_u);
+    const Vec<D> t = g - g.dot(best_u) * best_u;
+    const double n = t.norm();
+    if (!(n > 1e-15 * g.norm())) break;
+    const Vec<D> u = (best_u + step * t / n).normalized();
+    const double v = s(u);
+    if (v > best) {
+      best = v;
+      best_u = u;
+      step = std::min(2 * step, 0.5);
+    } else {
+      step *= 0.5;
+    }
+  }
+  return {best, best_u};
+}
+
+/// Makes a lower bound g of the gap of two overlapping (or barely apart) convex FCL pieces
+/// tight. support_gap's ascent stalls on ridges of s(u) (a polytope's edge or vertex against a
+/// curved piece), and GJK alone cannot tell a slight overlap from a touch. So b is pulled out
+/// along g's normal u until GJK is reliable (apart by more than `near`): the gap is convex in b's
+/// position, so gap >= d_m - m (n_m . u), tight to O(m^2 curvature sin^2(angle(u, normal))).
+/// Repeated along the normal found; the last pass (pulled along the best normal) is used: GJK's
+/// nearest-point direction carries ~1e-4 of angular error on curved shapes, which spoils the
+/// bound of a pull far off the normal.
+template <int D>
+void tighten_by_pulls(const fcl::CollisionGeometryd* ga, const fcl::Transform3d& ta, const fcl::CollisionGeometryd* gb,
+                      const fcl::Transform3d& tb, const fcl::DistanceRequestd& request, double size, double near,
+                      Gap<D>& g, std::uint64_t& queries) {
+  Vec<D> dir = g.normal;
+  double m = std::max(0.0, -g.value) + 1e-4 * size;
+  Gap<D> pulled_gap;
+  bool pulled_ok = false;
+  for (int pass = 0, tries = 0; pass < 3 && tries < 12; ++tries) {
+    fcl::Transform3d moved = tb;
+    if constexpr (D == 2) moved.translation() += Eigen::Vector3d(m * dir[0], m * dir[1], 0.0);
+    else moved.translation() += m * dir;
+    fcl::DistanceResultd pulled;
+    ++queries;
+    fcl::distance(ga, ta, gb, moved, request, pulled);
+    if (!(pulled.min_distance > near)) {  // still overlapping along dir: pull further
+      m *= 2;
+      continue;
+    }
+    const Vec<D> n = unit_or<D>(project<D>(pulled.nearest_points[1] - pulled.nearest_points[0]), dir);
+    pulled_gap = {pulled.min_distance - m * n.dot(dir), n};
+    pulled_ok = true;
+    dir = n;
+    m = std::max(0.0, -pulled_gap.value) + 1e-4 * size;
+    ++pass;
+  }
+  if (pulled_ok && pulled_gap.value > g.value) g = pulled_gap;  // s(u) is a strict lower bound
+}
+
+bool is_ball_made(const char* kind) {
+  const std::string k = kind;
+  return k == "sphere" || k == "cluster" || k == "spherocylinder";
+}
+
+}  // namespace
+
+template <int D>
+NarrowPhase<D>::NarrowPhase() {
+  add_pair("sphere", "sphere", sphere_sphere<D>);
+  add_pair("spherocylinder", "spherocylinder", capsule_capsule<D>);
+  add_pair("sphere", "spherocylinder", sphere_capsule<D>);
+  add_pair("cluster", "cluster", ball_union_gap<D>);
+  add_pair("cluster", "sphere", ball_union_gap<D>);
+  add_pair("cluster", "spherocylinder", ball_union_gap<D>);
+}
+
+template <int D>
+NarrowPhase<D>::~NarrowPhase() = default;
+
+template <int D>
+void NarrowPhase<D>::add_pair(const std::string& kind_a, const std::string& kind_b, PairGap gap) {
+  memo_.clear();
+  pairs_[{kind_a, kind_b}] = gap;
+  if (kind_a != kind_b)
+    pairs_[{kind_b, kind_a}] = [gap](const Particle<D>& a, const Particle<D>& b) {
+      Gap<D> g = gap(b, a);  // gradient for a: flip it to get the one for b
+      g.normal = -g.normal;
+      return g;
+    };
+}
+
+template <int D>
+const typename NarrowPhase<D>::PairGap* NarrowPhase<D>::pair_of(const char* kind_a, const char* kind_b) const {
+  for (const Memo& m : memo_)
+    if (m.a == kind_a && m.b == kind_b) return m.gap;
+  const auto it = pairs_.find({kind_a, kind_b});
+  const PairGap* g = it == pairs_.end() ? nullptr : &it->second;
+  memo_.push_back({kind_a, kind_b, g});
+  return g;
+}
+
+template <int D>
+Gap<D> NarrowPhase<D>::gap(const Particle<D>& a, const Particle<D>& b) const {
+  if (const PairGap* g = pair_of(a.shape->kind(), b.shape->kind())) return (*g)(a, b);
+  return fcl_gap(a, b);
+}
+
+template <int D>
+const typename NarrowPhase<D>::FclShape& NarrowPhase<D>::fcl_of(const ShapePtr<D>& s) const {
+  auto& slot = cache_[s.get()];
+  if (!slot) {
+    slot = std::make_unique<FclShape>();
+    slot->keep_alive = s;
+    slot->parts = s->fcl_parts();
+    const std::string kind = s->kind();
+    if (kind == "cluster") slot->balls = s->hull_balls();
+    if (kind == "polygon" || kind == "polyhedron") {
+      // Directions up to sign, each once (a triangulated cube has 3 face normals, not 12).
+      auto add_unique = [](std::vector<Vec<D>>& list, const Vec<D>& v) {
+        for (const Vec<D>& w : list)
+          if (std::abs(std::abs(w.dot(v)) - 1) < 1e-12) return;
+        list.push_back(v);
+      };
+      const SurfaceMesh<D> m = s->surface(0);
+      for (const auto& f : m.facets) {
+        if constexpr (D == 2) {
+          const Vec2 e = m.vertices[static_cast<std::size_t>(f[1])] - m.vertices[static_cast<std::size_t>(f[0])];
+          add_unique(slot->normals, Vec2(e.y(), -e.x()).normalized());
+        } else {
+          const Vec3& a = m.vertices[static_cast<std::size_t>(f[0])];
+          const Vec3& b = m.vertices[static_cast<std::size_t>(f[1])];
+          const Vec3& c = m.vertices[static_cast<std::size_t>(f[2])];
+          add_unique(slot->normals, (b - a).cross(c - a).normalized());
+          for (const Vec3& e : {Vec3(b - a), Vec3(c - b), Vec3(a - c)}) add_unique(slot->edges, e.normalized());
+        }
+      }
+    }
+  }
+  return *slot;
+}
+
+template <int D>
+Gap<D> NarrowPhase<D>::fcl_gap(const Particle<D>& a, const Particle<D>& b) const {
+  const FclShape& fa = fcl_of(a.shape);
+  const FclShape& fb = fcl_of(b.shape);
+  fcl::DistanceRequestd request;
+  request.enable_nearest_points = true;
+  request.enable_signed_distance = false;  // GJK only: exact when apart; overlaps go to support_gap
+  request.gjk_solver_type = fcl::GST_LIBCCD;
+  // FCL's default GJK tolerance (1e-6, absolute) leaves curved shapes 1e-5 off: far coarser
+  // than the contact tolerance. Relative to the pair's size instead.
+  // Length scale: the smaller size (a vertex wall is a particle of radius 0: the other one's).
+  const double ra = a.bounding_radius(), rb = b.bounding_radius();
+  const double size = ra > 0 && rb > 0 ? std::min(ra, rb) : std::max(ra, rb);
+  request.distance_tolerance = 1e-10 * size;  // 1e-8: GJK errors up to 3e-4 of the size on curved pairs (measured)
+  // GJK in distance mode reports a tiny positive distance (~1e-16), not an overlap, when curved
+  // shapes overlap slightly: its simplex converges onto the origin without enclosing it (always
+  // for 2D shapes embedded in z = 0 whose support points stay in that plane). Distances this
+  // small go to the overlap path below, which handles both signs.
+  const double near = 1e-6 * size;
+  // Separating-axis candidates of a polytope pair, in the world frame.
+  std::vector<Vec<D>>& axes = axes_scratch_;
+  axes.clear();
+  auto add_axes = [&](const Particle<D>& p, const FclShape& f) {
+    for (const Vec<D>& n : f.normals) axes.push_back(p.pose.rotation * n);
+  };
+  Gap<D> best{std::numeric_limits<double>::infinity(), Vec<D>::Zero()};
+  for (std::size_t i = 0; i < fa.parts.size(); ++i)
+    for (std::size_t j = 0; j < fb.parts.size(); ++j) {
+      const FclPart<D>& pa = fa.parts[i];
+      const FclPart<D>& pb = fb.parts[j];
+      fcl::DistanceResultd result;
+      ++fcl_queries_;
+      const fcl::Transform3d ta = part_transform(a.pose, pa), tb = part_transform(b.pose, pb);
+      fcl::distance(pa.geometry.get(), ta, pb.geometry.get(), tb, request, result);
+      Gap<D> g;
+      if (result.min_distance > near) {
+        // Nearest points are in the world frame: b's point minus a's is the outward direction.
+        g.value = result.min_distance;
+        g.normal = unit_or<D>(project<D>(result.nearest_points[1] - result.nearest_points[0]),
+                              Vec<D>(b.pose.position - a.pose.position));
+      } else {
+        if (axes.empty()) {
+          add_axes(a, fa);
+          add_axes(b, fb);
+          if constexpr (D == 3) {
+            for (const Vec3& ea : fa.edges)
+              for (const Vec3& eb : fb.edges) {
+                const Vec3 n = (a.pose.rotation * ea).cross(b.pose.rotation * eb);
+                if (n.squaredNorm() > 1e-20) axes.push_back(n.normalized());
+              }
+          }
+        }
+        const ConvexPiece<D> A{&a, fa.balls.empty() ? nullptr : &fa.balls[i]};
+        const ConvexPiece<D> B{&b, fb.balls.empty() ? nullptr : &fb.balls[j]};
+        // Polytope pairs: facet normals and edge crosses are every candidate axis (exact SAT).
+        const bool complete = !fa.normals.empty() && !fb.normals.empty();
+        g = support_gap<D>(A, B, b.pose.position - a.pose.position, axes, complete);
+        if (!complete) tighten_by_pulls<D>(pa.geometry.get(), ta, pb.geometry.get(), tb, request, size, near, g, fcl_queries_);
+      }
+      if (g.value < best.value) best = g;
+    }
+  return best;
+}
+
+template <int D>
+Gap<D> NarrowPhase<D>::gap(const Wall<D>& w, const Particle<D>& b) const {
+  switch (w.kind) {
+    case WallKind::Plane: {
+      const Vec<D> x = b.support(-w.normal);
+      return {w.normal.dot(x - w.point), w.normal};
+    }
+    case WallKind::Sphere:
+    case WallKind::Cylinder: {
+      // The particle inside a sphere (cylinder): its farthest point from the centre (axis) sits
+      // on a hull ball, where a convex function of position peaks.
+      Gap<D> best{std::numeric_limits<double>::infinity(), Vec<D>::Zero()};
+      for (const Ball<D>& ball : b.shape->hull_balls()) {
+        const Vec<D> c = b.pose.to_world(ball.center);
+        Vec<D> d = c - w.point;
+        if (w.kind == WallKind::Cylinder) d -= d.dot(w.axis) * w.axis;
+        const double g = w.radius - d.norm() - ball.radius;
+        if (g < best.value) best = {g, unit_or<D>(Vec<D>(-d), Vec<D>(w.point - b.pose.position))};
+      }
+      return best;
+    }
+    case WallKind::Vertex: {
+      if (is_ball_made(b.shape->kind())) {
+        Particle<D> point;
+        point.shape = std::make_shared<SphereShape<D>>(0.0);
+        point.pose.position = w.point;
+        return ball_union_gap<D>(point, b);
+      }
+      Particle<D> point;
+      point.shape = std::make_shared<SphereShape<D>>(0.0);
+      point.pose.position = w.point;
+      const Gap<D> g = fcl_gap(point, b);
+      cache_.erase(point.shape.get());
+      return g;
+    }
+  }
+  return {};
+}
+
+template <int D>
+Gap<D> NarrowPhase<D>::gap_to_facet(const std::array<Vec<D>, D>& facet, const Particle<D>& b) const {
+  if constexpr (D == 2) {
+    // A segment is a spherocylinder of radius 0: analytic for ball-made shapes, FCL otherwise.
+    Particle<2> seg;
+    const Vec2 d = facet[1] - facet[0];
+    seg.shape = std::make_shared<SpherocylinderShape<2>>(0.5 * d.norm(), 0.0);
+    seg.pose.position = 0.5 * (facet[0] + facet[1]);
+    seg.pose.rotation = rotation_2d(std::atan2(d.y(), d.x()));
+    const Gap<2> g = gap(seg, b);
+    forget(seg.shape.get());
+    return g;
+  } else {
+    const fcl::TriangleP<double> tri(facet[0], facet[1], facet[2]);
+    const FclShape& fb = fcl_of(b.shape);
+    fcl::DistanceRequestd request;
+    request.enable_nearest_points = true;
+    request.enable_signed_distance = false;
+    request.gjk_solver_type = fcl::GST_LIBCCD;
+    request.distance_tolerance = 1e-10 * b.bounding_radius();
+    // The triangle as a particle-like convex piece for support_gap.
+    struct TriangleShape final : Shape<3> {
+      std::array<Vec3, 3> v;
+      const char* kind() const override { return "triangle"; }
+      double measure() const override { return 0; }
+      double bounding_radius() const override { return 0; }
+      double inscribed_radius() const override { return 0; }
+      Vec3 support(const Vec3& u) const override {
+        int k = 0;
+        for (int q = 1; q < 3; ++q)
+          if (u.dot(v[static_cast<std::size_t>(q)]) > u.dot(v[static_cast<std::size_t>(k)])) k = q;
+        return v[static_cast<std::size_t>(k)];
+      }
+      bool contains(const Vec3&) const override { return false; }
+      std::vector<Ball<3>> hull_balls() const override { return {}; }
+      SurfaceMesh<3> surface(int) const override { return {}; }
+      std::vector<FclPart<3>> fcl_parts() const override { return {}; }
+      ShapePtr<3> scaled(double) const override { return nullptr; }
+      std::string definition_json() const override { return "{}"; }
+    };
+    Gap<3> best{std::numeric_limits<double>::infinity(), Vec3::Zero()};
+    for (std::size_t j = 0; j < fb.parts.size(); ++j) {
+      const FclPart<3>& pb = fb.parts[j];
+      fcl::DistanceResultd result;
+      ++fcl_queries_;
+      const fcl::Transform3d tb = part_transform(b.pose, pb);
+      fcl::distance(&tri, fcl::Transform3d::Identity(), pb.geometry.get(), tb, request, result);
+      Gap<3> g;
+      if (result.min_distance > 1e-6 * b.bounding_radius()) {  // see fcl_gap: GJK's ~0 may be an overlap
+        g.value = result.min_distance;
+        g.normal = unit_or<3>(Vec3(result.nearest_points[1] - result.nearest_points[0]), Vec3(b.pose.position - facet[0]));
+      } else {
+        auto t = std::make_shared<TriangleShape>();
+        t->v = facet;
+        Particle<3> tp;
+        tp.shape = t;
+        std::vector<Vec3> axes{(facet[1] - facet[0]).cross(facet[2] - facet[0]).normalized()};
+        for (const Vec3& n : fb.normals) axes.push_back(b.pose.rotation * n);
+        const ConvexPiece<3> A{&tp, nullptr};
+        const ConvexPiece<3> B{&b, fb.balls.empty() ? nullptr : &fb.balls[j]};
+        for (const Vec3& e : fb.edges)
+          for (int q = 0; q < 3; ++q) {
+            const Vec3 n = (facet[static_cast<std::size_t>((q + 1) % 3)] - facet[static_cast<std::size_t>(q)]).cross(b.pose.rotation * e);
+            if (n.squaredNorm() > 1e-20) axes.push_back(n.normalized());
+          }
+        g = support_gap<3>(A, B, b.pose.position - (facet[0] + facet[1] + facet[2]) / 3.0, axes, !fb.normals.empty());
+        tighten_by_pulls<3>(&tri, fcl::Transform3d::Identity(), pb.geometry.get(), tb, request, b.bounding_radius(),
+                            1e-6 * b.bounding_radius(), g, fcl_queries_);
+      }
+      if (g.value < best.value) best = g;
+    }
+    return best;
+  }
+}
+
+template class NarrowPhase<2>;
+template class NarrowPhase<3>;
+
+}  // namespace fp

@@ -1,0 +1,51 @@
+#include "contact/shape_containment.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "core/geometry/mesh_container.hpp"
+#include "core/geometry/polygon_container.hpp"
+
+namespace fp {
+
+template <int D>
+ShapeContainment<D>::ShapeContainment(const Container<D>& container, const NarrowPhase<D>& narrow_phase)
+    : container_(container), np_(narrow_phase) {
+  if constexpr (D == 3) {
+    if (const auto* mesh = dynamic_cast<const MeshContainer*>(&container))  // any mesh may be non-convex
+      for (const auto& t : mesh->triangles())
+        facets_.push_back({mesh->vertices()[static_cast<std::size_t>(t[0])], mesh->vertices()[static_cast<std::size_t>(t[1])],
+                           mesh->vertices()[static_cast<std::size_t>(t[2])]});
+  } else {
+    if (const auto* poly = dynamic_cast<const PolygonContainer*>(&container)) {
+      const auto& v = poly->vertices();
+      const int n = static_cast<int>(v.size());
+      bool convex = true;
+      for (int i = 0; i < n; ++i) convex &= !poly->is_reflex(i);
+      if (!convex)
+        for (int i = 0; i < n; ++i) facets_.push_back({v[static_cast<std::size_t>(i)], v[static_cast<std::size_t>((i + 1) % n)]});
+    }
+  }
+}
+
+template <int D>
+double ShapeContainment<D>::protrusion(const Particle<D>& p) const {
+  double beyond = -std::numeric_limits<double>::infinity();
+  for (const Ball<D>& b : p.shape->hull_balls())
+    beyond = std::max(beyond, container_.signed_distance(p.pose.to_world(b.center)) + b.radius);
+  if (facets_.empty() || beyond > 0) return beyond;
+  // Facets within reach of the particle (walls_near gives Plane walls whose id is the facet).
+  near_.clear();
+  container_.walls_near(p.pose.position, p.bounding_radius(), near_);
+  for (const Wall<D>& w : near_) {
+    if (w.kind != WallKind::Plane || w.id < 0 || static_cast<std::size_t>(w.id) >= facets_.size()) continue;
+    const double g = np_.gap_to_facet(facets_[static_cast<std::size_t>(w.id)], p).value;
+    beyond = std::max(beyond, -g);
+  }
+  return beyond;
+}
+
+template class ShapeContainment<2>;
+template class ShapeContainment<3>;
+
+}  // namespace fp

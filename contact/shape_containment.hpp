@@ -1,0 +1,35 @@
+#pragma once
+// Is a particle of any shape inside the container? Two parts:
+//  * its hull balls inside (container signed distance): exact for convex containers, because the
+//    signed distance to a convex set is convex and so peaks on the hull balls;
+//  * for containers that may be non-convex (meshes, polygons with a reflex corner), also no
+//    boundary facet (triangle / edge) near the particle reaching into it (narrow phase against
+//    the facet): with its hull balls inside and no facet crossing it, the particle is inside.
+#include <array>
+#include <vector>
+
+#include "contact/narrow_phase.hpp"
+#include "core/geometry/container.hpp"
+
+namespace fp {
+
+template <int D>
+class ShapeContainment {
+ public:
+  ShapeContainment(const Container<D>& container, const NarrowPhase<D>& narrow_phase);
+
+  /// How far the particle reaches beyond the boundary (<= 0: inside; the largest of the hull
+  /// balls' protrusion and, for non-convex containers, the depth of any facet into it).
+  double protrusion(const Particle<D>& p) const;
+  /// protrusion <= tol * circumscribed radius.
+  bool inside(const Particle<D>& p, double tol) const { return protrusion(p) <= tol * p.bounding_radius(); }
+  bool checks_facets() const { return !facets_.empty(); }
+
+ private:
+  const Container<D>& container_;
+  const NarrowPhase<D>& np_;
+  std::vector<std::array<Vec<D>, D>> facets_;  ///< boundary facets of a non-convex container (by wall id)
+  mutable std::vector<Wall<D>> near_;
+};
+
+}  // namespace fp

@@ -1,0 +1,176 @@
+// The solver registry (contact/solver_registry.cpp): which contact solver a problem goes to.
+// Minimisation is the default for every pair; the analytic sphere solver is registered for
+// sphere-sphere and wall-sphere and is used only when EVERY pair of the problem has it.
+#include <gtest/gtest.h>
+
+#include <atomic>
+
+#include "contact/solver_registry.hpp"
+#include "contact/sphere_contact_solver.hpp"
+#include "general_contact_support.hpp"
+
+namespace fp::general_test {
+namespace {
+
+template <int D>
+bool is_analytic(const ContactSolver<D>& s) {
+  return dynamic_cast<const SphereContactSolver<D>*>(&s) != nullptr;
+}
+template <int D>
+bool is_minimisation(const ContactSolver<D>& s) {
+  return dynamic_cast<const MinimisationSolver<D>*>(&s) != nullptr;
+}
+
+/// A solver that only counts its calls (for overrides).
+template <int D>
+struct CountingSolver final : ContactSolver<D> {
+  mutable int calls = 0;
+  int solve(std::span<const Body<D>>, const Mobile<D>&, std::span<Placement<D>>) const override {
+    ++calls;
+    return 0;
+  }
+};
+
+template <int D>
+Particle<D> particle(ShapePtr<D> s, const Vec<D>& x) {
+  Particle<D> p;
+  p.shape = std::move(s);
+  p.pose.position = x;
+  return p;
+}
+
+template <int D>
+void picks_round() {
+  NarrowPhase<D> np;
+  const SolverRegistry<D> reg(np, MinimisationOptions{});
+  ASSERT_TRUE(is_minimisation<D>(reg.default_solver()));
+  const auto sphere = std::make_shared<SphereShape<D>>(1.0);
+  const auto capsule = std::make_shared<SpherocylinderShape<D>>(0.5, 0.5);
+  const Mobile<D> sphere_mobile = Mobile<D>::of_shape(sphere, Mat<D>::Identity());
+  const Mobile<D> capsule_mobile = Mobile<D>::of_shape(capsule, Mat<D>::Identity());
+
+  std::array<Particle<D>, D> spheres, capsules;
+  for (int i = 0; i < D; ++i) {
+    Vec<D> x = Vec<D>::Zero();
+    x[i % D] = 2.0 * (i + 1);
+    spheres[i] = particle<D>(sphere, x);
+    capsules[i] = particle<D>(capsule, x);
+  }
+  std::array<Body<D>, D> f;
+
+  // Sphere mobile + sphere particles (shaped or plain centre + radius): analytic.
+  for (int i = 0; i < D; ++i) f[i] = Body<D>::of_particle(spheres[i], i);
+  EXPECT_TRUE(is_analytic<D>(reg.pick(f, sphere_mobile)));
+  for (int i = 0; i < D; ++i) f[i] = Body<D>::sphere(spheres[i].pose.position, 1.0, i);
+  EXPECT_TRUE(is_analytic<D>(reg.pick(f, sphere_mobile)));
+
+  // A capsule anywhere: minimisation (mobile, one fixed body, all fixed bodies).
+  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, capsule_mobile)));
+  f[D - 1] = Body<D>::of_particle(capsules[D - 1], D - 1);
+  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, sphere_mobile)));
+  for (int i = 0; i < D; ++i) f[i] = Body<D>::of_particle(capsules[i], i);
+  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, sphere_mobile)));
+  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, capsule_mobile)));
+
+  // A wall and spheres: analytic; a wall and a capsule mobile: minimisation.
+  const Wall<D> wall = Wall<D>::plane(Vec<D>::Zero(), Vec<D>::UnitX());
+  for (int i = 0; i < D; ++i) f[i] = Body<D>::of_particle(spheres[i], i);
+  f[0] = Body<D>::of_wall(wall);
+  EXPECT_TRUE(is_analytic<D>(reg.pick(f, sphere_mobile)));
+  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, capsule_mobile)));
+  f[D - 1] = Body<D>::of_particle(capsules[D - 1], D - 1);
+  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, sphere_mobile)));
+
+  // A plain sphere mobile (radius only, the sphere fast path's form) against spheres: the
+  // analytic solver, which needs no shape (the minimisation solver cannot solve it).
+  for (int i = 0; i < D; ++i) f[i] = Body<D>::sphere(spheres[i].pose.position, 1.0, i);
+  EXPECT_TRUE(is_analytic<D>(reg.pick(f, plain_sphere<D>(1.0))));
+}
+
+TEST(SolverRegistry, Picks2D) { picks_round<2>(); }
+TEST(SolverRegistry, Picks3D) { picks_round<3>(); }
+
+template <int D>
+void override_round() {
+  NarrowPhase<D> np;
+  SolverRegistry<D> reg(np, MinimisationOptions{});
+  const auto sphere = std::make_shared<SphereShape<D>>(1.0);
+  const auto capsule = std::make_shared<SpherocylinderShape<D>>(0.5, 0.5);
+  std::array<Particle<D>, D> spheres, capsules;
+  for (int i = 0; i < D; ++i) {
+    Vec<D> x = Vec<D>::Zero();
+    x[i % D] = 2.0 * (i + 1);
+    spheres[i] = particle<D>(sphere, x);
+    capsules[i] = particle<D>(capsule, x);
+  }
+  const Mobile<D> capsule_mobile = Mobile<D>::of_shape(capsule, Mat<D>::Identity());
+  const Mobile<D> sphere_mobile = Mobile<D>::of_shape(sphere, Mat<D>::Identity());
+  std::array<Body<D>, D> f;
+  for (int i = 0; i < D; ++i) f[i] = Body<D>::of_particle(capsules[i], i);
+
+  // Capsule against capsules overridden: used for all-capsule problems only.
+  auto counting = std::make_shared<CountingSolver<D>>();
+  reg.override_pair("spherocylinder", "spherocylinder", counting);
+  EXPECT_EQ(&reg.pick(f, capsule_mobile), counting.get());
+  std::array<Placement<D>, ContactSolver<D>::kMaxSolutions> out;
+  reg.pick(f, capsule_mobile).solve(f, capsule_mobile, out);
+  EXPECT_EQ(counting->calls, 1);
+  f[0] = Body<D>::of_particle(spheres[0], 0);
+  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, capsule_mobile)));  // sphere-capsule has no override
+  reg.override_pair("sphere", "spherocylinder", counting);       // now every pair has the same one
+  EXPECT_EQ(&reg.pick(f, capsule_mobile), counting.get());
+
+  // Replacing the analytic sphere-sphere solver: wall + spheres now mixes two solvers -> default.
+  auto other = std::make_shared<CountingSolver<D>>();
+  reg.override_pair("sphere", "sphere", other);
+  for (int i = 0; i < D; ++i) f[i] = Body<D>::of_particle(spheres[i], i);
+  EXPECT_EQ(&reg.pick(f, sphere_mobile), other.get());
+  const Wall<D> wall = Wall<D>::plane(Vec<D>::Zero(), Vec<D>::UnitX());
+  f[0] = Body<D>::of_wall(wall);
+  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, sphere_mobile)));
+
+  // A new default.
+  auto fallback = std::make_shared<CountingSolver<D>>();
+  reg.set_default(fallback);
+  EXPECT_EQ(&reg.default_solver(), fallback.get());
+  EXPECT_EQ(&reg.pick(f, sphere_mobile), fallback.get());
+}
+
+TEST(SolverRegistry, OverridesAPair2D) { override_round<2>(); }
+TEST(SolverRegistry, OverridesAPair3D) { override_round<3>(); }
+
+/// End to end: the picked solver solves a wall + spheres problem and a capsule problem, and
+/// every position passes the independent check.
+template <int D>
+void solves_round(std::uint64_t seed) {
+  NarrowPhase<D> np;
+  const SolverRegistry<D> reg(np, MinimisationOptions{});
+  Rng rng(seed);
+  int analytic = 0, minimisation = 0, positions = 0;
+  for (int t = 0; t < 20; ++t) {
+    std::array<Kind, D> kinds;
+    kinds.fill(Kind::Sphere);
+    kinds[0] = Kind::Plane;
+    const bool capsule = t % 2;
+    Problem<D> pb;
+    if (!construct_problem<D>(pb, np, capsule ? Kind::Capsule : Kind::Sphere, kinds, Sizes{}, rng)) continue;
+    const ContactSolver<D>& s = reg.pick(pb.span(), pb.mobile());
+    EXPECT_EQ(is_analytic<D>(s), !capsule);
+    analytic += is_analytic<D>(s);
+    minimisation += is_minimisation<D>(s);
+    std::array<Placement<D>, ContactSolver<D>::kMaxSolutions> out;
+    const int n = s.solve(pb.span(), pb.mobile(), out);
+    positions += n;
+    EXPECT_TRUE(check_placements<D>(pb, std::span<const Placement<D>>(out.data(), n), 1e-6));
+    EXPECT_GT(n, 0) << pb.literal();
+  }
+  EXPECT_GT(analytic, 5);
+  EXPECT_GT(minimisation, 5);
+  EXPECT_GT(positions, 20);
+}
+
+TEST(SolverRegistry, PickedSolversSolve2D) { solves_round<2>(901); }
+TEST(SolverRegistry, PickedSolversSolve3D) { solves_round<3>(902); }
+
+}  // namespace
+}  // namespace fp::general_test
