@@ -1,0 +1,62 @@
+#include "front/shape_template.hpp"
+
+#include <cmath>
+
+#include "core/io/scene_error.hpp"
+
+namespace fp {
+
+template <int D>
+std::vector<ShapeTemplate<D>> resolve_templates(const Scene& scene) {
+  std::vector<ShapeTemplate<D>> out;
+  for (const ParticleTemplateSpec& spec : scene.particle_templates) {
+    ShapeTemplate<D> t;
+    t.family = spec.family;
+    t.prototype = ShapeFamilies::builtin().prototype<D>(spec);
+    t.size = spec.size;
+    t.scale_per_size = 1.0 / t.prototype.dimensions.at(spec.size_on);
+    t.orientation = spec.orientation;
+    t.fraction = spec.fraction;
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
+template <int D>
+Draft<D> draw_draft(const std::vector<ShapeTemplate<D>>& templates, Rng& rng) {
+  Draft<D> d;
+  if (templates.size() > 1) {
+    double total = 0;
+    for (const auto& t : templates) total += t.fraction;
+    double u = rng.uniform01() * total;
+    d.template_id = static_cast<int>(templates.size()) - 1;
+    for (std::size_t k = 0; k < templates.size(); ++k) {
+      if (u < templates[k].fraction) { d.template_id = static_cast<int>(k); break; }
+      u -= templates[k].fraction;
+    }
+  }
+  const ShapeTemplate<D>& t = templates[static_cast<std::size_t>(d.template_id)];
+  d.size = t.size->sample(rng);
+  d.shape = t.prototype.shape->scaled(d.size * t.scale_per_size);
+  if (t.orientation.kind == OrientationSpec::Kind::Fixed) {
+    if constexpr (D == 2) d.rotation = rotation_2d(t.orientation.fixed.at(0) * kPi / 180.0);
+    else d.rotation = rotation_of<3>(Eigen::Vector4d(t.orientation.fixed.at(0), t.orientation.fixed.at(1),
+                                                     t.orientation.fixed.at(2), t.orientation.fixed.at(3)));
+  } else if constexpr (D == 2) {
+    d.rotation = rotation_2d(2 * kPi * rng.uniform01());
+  } else {
+    // Shoemake (1992): uniform on SO(3).
+    const double u1 = rng.uniform01(), u2 = rng.uniform01(), u3 = rng.uniform01();
+    const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
+    d.rotation = rotation_of<3>(Eigen::Vector4d(b * std::cos(2 * kPi * u3), a * std::sin(2 * kPi * u2),
+                                                a * std::cos(2 * kPi * u2), b * std::sin(2 * kPi * u3)));
+  }
+  return d;
+}
+
+template std::vector<ShapeTemplate<2>> resolve_templates<2>(const Scene&);
+template std::vector<ShapeTemplate<3>> resolve_templates<3>(const Scene&);
+template Draft<2> draw_draft<2>(const std::vector<ShapeTemplate<2>>&, Rng&);
+template Draft<3> draw_draft<3>(const std::vector<ShapeTemplate<3>>&, Rng&);
+
+}  // namespace fp
