@@ -1,5 +1,8 @@
 #include "cli/pack_command.hpp"
 
+#include "cli/progress_line.hpp"
+#include "cli/shape_pack_command.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -56,24 +59,6 @@ void apply_overrides(Scene& scene, const PackCommandOptions& o) {
   }
 }
 
-class ProgressLine {
- public:
-  explicit ProgressLine(bool on) : on_(on) {}
-  void operator()(std::uint64_t n, double t, double vf) {
-    std::fprintf(stderr, "\r  packed %12llu   %10.0f /s   VF %.4f   %6.1f s ", static_cast<unsigned long long>(n),
-                 t > 0 ? static_cast<double>(n) / t : 0.0, vf, t);
-    std::fflush(stderr);
-    shown_ = true;
-  }
-  void finish() {
-    if (shown_) std::fprintf(stderr, "\n");
-  }
-  bool on() const { return on_; }
-
- private:
-  bool on_;
-  bool shown_ = false;
-};
 
 template <int D>
 int run(const Scene& scene, const PackCommandOptions& o) {
@@ -186,7 +171,21 @@ int run_pack_command(const PackCommandOptions& o) {
     std::fprintf(stderr, "frontpack: error: %s\n", e.what());
     return 2;
   }
+  if (!scene.particle_templates.empty()) {
+    // Every shape-specific input problem (family, parameters, output formats) before any work.
+    try {
+      check_shape_scene(scene);
+    } catch (const SceneError& e) {
+      std::fprintf(stderr, "frontpack: error: %s\n", e.what());
+      return 2;
+    } catch (const std::invalid_argument& e) {
+      std::fprintf(stderr, "frontpack: error: %s\n", e.what());
+      return 2;
+    }
+  }
   try {
+    if (!scene.particle_templates.empty())  // non-spherical particles: the general front
+      return scene.dimension == 2 ? run_shape_pack<2>(scene, o) : run_shape_pack<3>(scene, o);
     return scene.dimension == 2 ? run<2>(scene, o) : run<3>(scene, o);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "frontpack: error: %s\n", e.what());

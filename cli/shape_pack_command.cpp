@@ -1,0 +1,132 @@
+#include "cli/shape_pack_command.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "cli/progress_line.hpp"
+#include "contact/shape_validation.hpp"
+#include "core/io/output_format.hpp"
+#include "core/io/run_record.hpp"
+#include "front/pack_shapes_scene.hpp"
+#include "frontpack/version.hpp"
+#include "shapes/io/shape_packing_writers.hpp"
+
+namespace fp {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+template <int D>
+void check_in(const Scene& scene) {
+  std::vector<std::string> families;
+  for (const ShapeTemplate<D>& t : resolve_templates<D>(scene)) families.push_back(t.prototype.shape->kind());
+  for (const OutputSpec& out : scene.outputs) check_shape_format<D>(parse_output_format(out.format), families);
+}
+
+}  // namespace
+
+void check_shape_scene(const Scene& scene) {
+  if (scene.dimension == 2) check_in<2>(scene);
+  else check_in<3>(scene);
+}
+
+template <int D>
+int run_shape_pack(const Scene& scene, const PackCommandOptions& o) {
+  const Container<D>& container = *scene.container<D>();
+  ProgressLine progress(o.progress);
+  ProgressFn progress_fn;
+  if (progress.on()) progress_fn = [&](std::uint64_t n, double t, double vf) { progress(n, t, vf); };
+  ShapePackResult<D> res = pack_shape_scene<D>(scene, progress_fn);
+  progress.finish();
+  const ShapePacking<D>& P = res.packing;
+
+  const auto t_check = Clock::now();
+  const ShapeValidation v = validate_shapes<D>(P, container, res.gap_tolerance);
+  const double check_seconds = since(t_check);
+  const double vf = res.solid_measure / container.measure();
+  const double n = static_cast<double>(P.size());
+
+  RunRecord rec;
+  rec.version = kVersion;
+  rec.scene_path = scene.source_path;
+  rec.scene_text = scene.source_text;
+  rec.seed = scene.seed;
+  rec.dimension = D;
+  rec.n = P.size();
+  rec.container_description = container.describe();
+  {
+    std::string d;
+    for (const ShapeTemplate<D>& t : resolve_templates<D>(scene))
+      d += (d.empty() ? "" : "; ") + t.family + " " + t.size->describe();
+    rec.distribution_description = d;
+    const Aabb<D> b = container.bounds();
+    Aabb<3> b3;
+    b3.lo.setZero();
+    b3.hi.setZero();
+    b3.lo.template head<D>() = b.lo;
+    b3.hi.template head<D>() = b.hi;
+    rec.bounds = b3;
+  }
+  const MinimisationStats& ms = res.minimisation;
+  rec.timings = {{"pack", res.seconds}, {"validation", check_seconds}};
+  rec.metrics = {{"volume_fraction_container", vf},
+                 {"gap_tolerance", res.gap_tolerance},
+                 {"mean_coordination", v.mean_coordination},
+                 {"max_overlap_over_rmin", v.max_overlap_rel},
+                 {"max_outside_over_r", v.max_outside_rel},
+                 {"particles_per_second", res.seconds > 0 ? n / res.seconds : 0.0}};
+  const FrontCounters& c = res.counters;
+  rec.counters = {{"front_picks", c.front_picks},         {"front_removals", c.front_removals},
+                  {"pairs_considered", c.pairs_considered}, {"pairs_pruned", c.pairs_pruned},
+                  {"solves", c.solves},                   {"analytic_solves", res.analytic_solves},
+                  {"candidates", c.candidates},           {"rejected_overlap", c.rejected_overlap},
+                  {"rejected_container", c.rejected_container}, {"wall_bodies", c.wall_bodies},
+                  {"radii_drawn", c.radii_drawn},         {"radii_unplaced", c.radii_unplaced},
+                  {"max_neighbours", c.max_neighbours},   {"voids_reopened", c.voids_reopened},
+                  {"voids_seeded", c.voids_seeded},       {"minimisations", ms.minimisations},
+                  {"gap_evaluations", ms.evaluations},    {"minima_rejected", ms.rejected_gap},
+                  {"fcl_queries", res.fcl_queries},       {"contacts", v.contacts},
+                  {"wall_contacts", v.wall_contacts},     {"pairs_checked", v.pairs_checked}};
+  rec.info = {{"stop_reason", to_string(res.stop)},
+              {"validation", v.ok ? "ok" : "FAILED"},
+              {"minimisation_algorithm", scene.packer.minimisation.algorithm}};
+
+  const auto t_write = Clock::now();
+  for (const OutputSpec& out : scene.outputs) write_shape_packing<D>(parse_output_format(out.format), out.path, P, rec);
+  if (!o.record_path.empty()) write_run_record(o.record_path, rec);
+  const double write_seconds = since(t_write);
+
+  if (!o.quiet) {
+    std::printf("frontpack %s   scene %s   seed %llu   %dD\n", kVersion, scene.source_path.c_str(),
+                static_cast<unsigned long long>(scene.seed), D);
+    std::printf("  container      %s, %s %.6g\n", container.describe().c_str(), D == 3 ? "volume" : "area",
+                container.measure());
+    std::printf("  particles      %s\n", rec.distribution_description.c_str());
+    std::printf("  placed         %zu   (stop: %s)\n", P.size(), to_string(res.stop));
+    std::printf("  %s     %.4f of the container\n", D == 3 ? "volume fraction" : "area fraction  ", vf);
+    std::printf("  coordination   %.3f   (contacts: |gap| <= %.3g x smaller circumscribed radius)\n", v.mean_coordination,
+                res.gap_tolerance);
+    std::printf("  solver         %s: %llu solves (%llu analytic), %llu minimisations, %llu gap evaluations, %llu FCL queries\n",
+                scene.packer.minimisation.algorithm.c_str(), static_cast<unsigned long long>(c.solves),
+                static_cast<unsigned long long>(res.analytic_solves), static_cast<unsigned long long>(ms.minimisations),
+                static_cast<unsigned long long>(ms.evaluations), static_cast<unsigned long long>(res.fcl_queries));
+    std::printf("  validation     %s\n", v.summary().c_str());
+    std::printf("  time           pack %.3f s (%.1f particles/s), validation %.3f s, write %.3f s\n", res.seconds,
+                res.seconds > 0 ? n / res.seconds : 0.0, check_seconds, write_seconds);
+    for (const OutputSpec& out : scene.outputs) std::printf("  output         %s (%s)\n", out.path.c_str(), out.format.c_str());
+    if (!o.record_path.empty()) std::printf("  run record     %s\n", o.record_path.c_str());
+  }
+  if (!v.ok) {
+    std::fprintf(stderr, "frontpack: error: the packing failed validation: %s\n", v.summary().c_str());
+    return 3;
+  }
+  return 0;
+}
+
+template int run_shape_pack<2>(const Scene&, const PackCommandOptions&);
+template int run_shape_pack<3>(const Scene&, const PackCommandOptions&);
+
+}  // namespace fp

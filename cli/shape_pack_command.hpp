@@ -1,0 +1,16 @@
+#pragma once
+// `frontpack pack` for a scene of non-spherical particles: templates -> general advancing front
+// -> independent validation -> outputs (shapes/io) -> summary and run record.
+#include "cli/pack_command.hpp"
+#include "core/io/scene.hpp"
+
+namespace fp {
+
+/// Resolves every template and checks that every output format can hold these shapes. Throws
+/// SceneError (file, line, key) or std::invalid_argument; nothing has been written.
+void check_shape_scene(const Scene& scene);
+
+template <int D>
+int run_shape_pack(const Scene& scene, const PackCommandOptions& options);
+
+}  // namespace fp
