@@ -1,0 +1,95 @@
+// The general-shape machinery: narrow-phase gaps (analytic capsule path, FCL polytope path) and
+// one minimisation solve (a capsule touching three capsules), per algorithm.
+// A separate executable: frontpack_bench (spheres) must link no FCL and no NLopt.
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <vector>
+
+#include "contact/minimisation_solver.hpp"
+#include "core/sampling/rng.hpp"
+#include "shapes/shape_registry.hpp"
+#include "shapes/spherocylinder_shape.hpp"
+
+namespace {
+
+using namespace fp;
+
+Mat<3> random_rotation(Rng& rng) {
+  const double u1 = rng.uniform01(), u2 = rng.uniform01(), u3 = rng.uniform01();
+  const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
+  return rotation_of<3>(Eigen::Vector4d(b * std::cos(2 * kPi * u3), a * std::sin(2 * kPi * u2), a * std::cos(2 * kPi * u2),
+                                        b * std::sin(2 * kPi * u3)));
+}
+
+/// Particles of `shape` at random poses in a cube of side `side`.
+std::vector<Particle<3>> scatter(const ShapePtr<3>& shape, int n, double side, std::uint64_t seed) {
+  Rng rng(seed);
+  std::vector<Particle<3>> out(static_cast<std::size_t>(n));
+  for (auto& p : out) {
+    p.shape = shape;
+    p.pose.position = Vec3(rng.uniform(0, side), rng.uniform(0, side), rng.uniform(0, side));
+    p.pose.rotation = random_rotation(rng);
+  }
+  return out;
+}
+
+ShapePtr<3> icosahedron() {
+  ParticleTemplateSpec spec;
+  spec.family = "polyhedron";
+  spec.parameters.strings["preset"] = "icosahedron";
+  return ShapeFamilies::builtin().prototype<3>(spec).shape;
+}
+
+void BM_GapCapsuleCapsule(benchmark::State& state) {
+  const auto ps = scatter(std::make_shared<SpherocylinderShape<3>>(0.5, 0.5), 1024, 3.0, 1);
+  NarrowPhase<3> np;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(np.gap(ps[k & 1023], ps[(k + 1) & 1023]));
+    ++k;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_GapCapsuleCapsule);
+
+/// FCL path: icosahedra (GJK apart, EPA on overlap); the cube side sets the overlapping share.
+void BM_GapPolyhedronFcl(benchmark::State& state) {
+  const auto ps = scatter(icosahedron(), 1024, static_cast<double>(state.range(0)) / 10.0, 2);
+  NarrowPhase<3> np;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(np.gap(ps[k & 1023], ps[(k + 1) & 1023]));
+    ++k;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_GapPolyhedronFcl)->Arg(15)->Arg(60);
+
+/// One contact problem: a capsule (aspect ratio 0.5) touching three capsules that touch a known
+/// position; args: algorithm index (slsqp, lbfgs, nelder-mead).
+void BM_MinimisationCapsules(benchmark::State& state) {
+  const char* names[] = {"slsqp", "lbfgs", "nelder-mead"};
+  MinimisationOptions o;
+  o.algorithm = names[state.range(0)];
+  if (o.algorithm == "nelder-mead") o.max_evaluations = 600;
+  NarrowPhase<3> np;
+  MinimisationSolver<3> solver(np, o);
+  const auto shape = std::make_shared<SpherocylinderShape<3>>(0.5, 0.5);
+  auto fixed = scatter(shape, 3 * 256, 2.5, 3);
+  std::vector<std::array<Body<3>, 3>> problems;
+  for (int k = 0; k < 256; ++k)
+    problems.push_back({Body<3>::of_particle(fixed[3 * k]), Body<3>::of_particle(fixed[3 * k + 1]),
+                        Body<3>::of_particle(fixed[3 * k + 2])});
+  const Mobile<3> mobile = Mobile<3>::of_shape(shape, Mat<3>::Identity());
+  std::array<Placement<3>, 4> out;
+  std::size_t k = 0;
+  int found = 0;
+  for (auto _ : state) found += solver.solve(problems[k++ & 255], mobile, out);
+  state.SetItemsProcessed(state.iterations());
+  state.SetLabel(o.algorithm);
+  state.counters["solutions_per_solve"] = static_cast<double>(found) / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_MinimisationCapsules)->Arg(0)->Arg(1)->Arg(2);
+
+}  // namespace
