@@ -199,8 +199,8 @@ class ShapeFront {
     start_cluster(res, seed_point_);
   }
 
-  bool start_cluster(ShapePackResult<D>& res, const Vec<D>& where) {
-    const std::size_t k1 = largest_in_pool();
+  bool start_cluster(ShapePackResult<D>& res, const Vec<D>& where, std::optional<std::size_t> draft = std::nullopt) {
+    const std::size_t k1 = draft ? *draft : largest_in_pool();
     std::optional<Vec<D>> c1 = first_centre(pool_[k1], where);
     if (!c1) {
       if (res.packing.empty())
@@ -248,13 +248,13 @@ class ShapeFront {
     return where + hi * (deep - where);
   }
 
-  /// F ran empty: the lattice points (spacing ~2 r_max) where the largest pooled draft fits;
-  /// the particles around them go back into F once; then one new cluster in the void closest to
-  /// the seed point. False when there is no void left.
+  /// F ran empty: the lattice points (spacing ~r_max) where some pooled draft fits (the real
+  /// test: an elongated draft fits many a void its circumscribed sphere does not); the particles
+  /// around them go back into F once; then one new cluster in the void closest to the seed
+  /// point. False when there is no void left.
   bool resume_at_voids(ShapePackResult<D>& res) {
-    const std::size_t k = largest_in_pool();
     const Aabb<D> box = container_.bounds();
-    double h = 2 * r_max_;
+    double h = r_max_;
     std::int64_t dims[D];
     for (;;) {
       double points = 1;
@@ -262,20 +262,23 @@ class ShapeFront {
         dims[a] = static_cast<std::int64_t>(std::floor(box.size()[a] / h)) + 1;
         points *= static_cast<double>(dims[a]);
       }
-      if (points <= double(1 << 22)) break;
+      if (points <= double(1 << 20)) break;
       h *= 1.26;
     }
     bool reopened = false, found = false;
     Vec<D> best;
+    std::size_t best_k = 0;
     double best_d2 = std::numeric_limits<double>::infinity();
     if (failed_radius_.size() < res.packing.size()) failed_radius_.resize(res.packing.size(), std::numeric_limits<double>::infinity());
     std::int64_t idx[D] = {};
     for (std::int64_t flat = 0;; ++flat) {
       Vec<D> p;
       for (int a = 0; a < D; ++a) p[a] = box.lo[a] + 0.5 * (box.size()[a] - (dims[a] - 1) * h) + idx[a] * h;
-      bool empty = container_.signed_distance(p) <= -pool_[k].bounding_radius();
-      if (empty) grid_.for_each_within(p, pool_[k].bounding_radius(), [&](int, const Vec<D>&, double, double) { empty = false; });
-      if (empty && fits(at(pool_[k], p))) {
+      std::size_t k = pool_.size();
+      if (container_.signed_distance(p) < 0)
+        for (std::size_t q = 0; q < pool_.size() && k == pool_.size(); ++q)
+          if (fits(at(pool_[q], p))) k = q;
+      if (k < pool_.size()) {
         if (voids_reopened_.insert(flat).second) {
           grid_.for_each_within(p, 3 * pool_[k].bounding_radius(), [&](int id, const Vec<D>& c, double, double) {
             failed_radius_[static_cast<std::size_t>(id)] = std::numeric_limits<double>::infinity();
@@ -286,7 +289,7 @@ class ShapeFront {
           });
         }
         const double d2 = (p - seed_point_).squaredNorm();
-        if (d2 < best_d2) best_d2 = d2, best = p, found = true;
+        if (d2 < best_d2) best_d2 = d2, best = p, best_k = k, found = true;
       }
       int a = 0;
       while (a < D && ++idx[a] == dims[a]) idx[a++] = 0;
@@ -298,7 +301,7 @@ class ShapeFront {
     }
     if (!found) return false;
     ++res.counters.voids_seeded;
-    return start_cluster(res, best);
+    return start_cluster(res, best, best_k);
   }
 
   /// Step 2.1-2.2 for one s0: the pooled drafts from the largest down; a draft at least as large
