@@ -112,7 +112,10 @@ MinimisationSolver<D>::MinimisationSolver(const NarrowPhase<D>& narrow_phase, co
   nlopt::opt& o = impl_->opt;
   o.set_maxeval(opt_.max_evaluations);
   o.set_xtol_abs(1e-3 * opt_.gap_tolerance);
-  const double f_tol = impl_->algorithm.smooth ? std::pow(1e-2 * opt_.gap_tolerance, 2) : 1e-2 * opt_.gap_tolerance;
+  // With the Newton polish the minimiser only has to get close (Newton then converges
+  // quadratically); without it, it must reach the tolerance itself.
+  const double close = (opt_.polish ? 1e2 : 1e-2) * opt_.gap_tolerance;
+  const double f_tol = impl_->algorithm.smooth ? close * close : close;
   o.set_stopval(f_tol);
   if (!impl_->algorithm.smooth) o.set_initial_step(0.1);
 }
