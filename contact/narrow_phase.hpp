@@ -81,7 +81,7 @@ class NarrowPhase {
   mutable std::vector<Memo> memo_;
   mutable std::unordered_map<const Shape<D>*, std::unique_ptr<FclShape>> cache_;
   mutable std::uint64_t fcl_queries_ = 0;
-  mutable std::vector<Vec<D>> axes_scratch_;
+  mutable std::vector<Vec<D>> axes_scratch_, world_a_, world_b_;
 };
 
 }  // namespace fp
