@@ -117,6 +117,10 @@ MinimisationSolver<D>::MinimisationSolver(const NarrowPhase<D>& narrow_phase, co
   const double close = (opt_.polish ? 1e2 : 1e-2) * opt_.gap_tolerance;
   const double f_tol = impl_->algorithm.smooth ? close * close : close;
   o.set_stopval(f_tol);
+  // A minimisation with no zero to find (most of them: no contact position in that half-space)
+  // stalls at a positive value; stop it once an iteration gains less than 1 % (converging
+  // ones gain orders of magnitude per iteration).
+  o.set_ftol_rel(1e-2);
   if (!impl_->algorithm.smooth) o.set_initial_step(0.1);
 }
 
@@ -183,7 +187,9 @@ int MinimisationSolver<D>::solve(std::span<const Body<D>> fixed, const Mobile<D>
       eq[static_cast<std::size_t>(i)] = fixed[i];
       if (fixed[i].shaped) eq[static_cast<std::size_t>(i)].radius = equivalent(*fixed[i].shaped->shape);
     }
-    n_starts = s.spheres.solve(std::span<const Body<D>>(eq.data(), D), Mobile<D>{equivalent(*mobile.shape)},
+    Mobile<D> eq_mobile;
+    eq_mobile.radius = equivalent(*mobile.shape);
+    n_starts = s.spheres.solve(std::span<const Body<D>>(eq.data(), D), eq_mobile,
                                std::span<Placement<D>>(starts.data(), starts.size()));
   }
   if (n_starts == 0 && has_plane) {  // far apart for equivalent spheres: both sides of the plane
