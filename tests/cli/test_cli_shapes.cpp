@@ -1,0 +1,164 @@
+// `frontpack pack` with non-spherical particles (scene `particles: [{shape: ...}]`): small
+// capsule scenes in 2D and 3D written to a temp folder, every output format that applies
+// (vtu + its surfaces companion, csv, json), the run record, refusals (a format that cannot hold
+// capsules, an unknown family, a bad parameter) and reproducibility.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <regex>
+
+#include "cli_test_util.hpp"
+
+namespace fptest {
+namespace {
+
+/// A capsule scene (aspect ratio 0.5: radius = half the circumscribed radius, half-length = the
+/// other half) with a tiny stop and the three formats that can hold capsules.
+std::string capsule_scene(int dimension, int particles) {
+  const std::string container = dimension == 2 ? "container: {type: rectangle, min: [0, 0], max: [6, 6]}\n"
+                                               : "container: {type: box, min: [0, 0, 0], max: [4, 4, 4]}\n";
+  return "dimension: " + std::to_string(dimension) + "\nseed: 5\n" + container +
+         "particles:\n"
+         "  - shape: spherocylinder\n"
+         "    aspect_ratio: 0.5\n"
+         "    size: {distribution: uniform, min: 0.4, max: 0.6}\n"
+         "stop: {particles: " + std::to_string(particles) + "}\n"
+         "output:\n"
+         "  - {format: vtu, path: out/caps.vtu}\n"
+         "  - {format: csv, path: out/caps.csv}\n"
+         "  - {format: json, path: out/caps.json}\n";
+}
+
+int python(const std::string& code, const fs::path& arg) {
+  return std::system(("/usr/bin/python3 -c " + quoted(code) + " " + quoted(arg.string())).c_str());
+}
+
+class CliShapes : public ::testing::TestWithParam<int> {};
+
+TEST_P(CliShapes, CapsulesEveryFormat) {
+  const int D = GetParam();
+  const int n = D == 2 ? 25 : 15;
+  TempDir dir;
+  write_bytes(dir.work() / "caps.yaml", capsule_scene(D, n));
+  fs::create_directories(dir.work() / "out");
+  const RunResult r = run_frontpack(dir, "pack caps.yaml --record out/rec.json");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_NE(r.out.find("validation     ok"), std::string::npos) << r.out;
+  EXPECT_EQ(listing(dir.work() / "out"), (std::set<std::string>{"caps.vtu", "caps.surfaces.vtu", "caps.csv", "caps.json", "rec.json"}));
+
+  // CSV: the capsule layout, end points 2a apart (a = half-length = r for aspect ratio 0.5).
+  const std::vector<std::string> lines = lines_of(read_bytes(dir.work() / "out/caps.csv"));
+  ASSERT_EQ(lines.size(), static_cast<std::size_t>(n) + 1);
+  EXPECT_EQ(lines[0], D == 3 ? "id,shape_id,ax,ay,az,bx,by,bz,r" : "id,shape_id,ax,ay,bx,by,r");
+  for (int i = 1; i <= n; ++i) {
+    std::vector<double> v;
+    ASSERT_TRUE(parse_numbers(lines[static_cast<std::size_t>(i)], ',', v)) << lines[static_cast<std::size_t>(i)];
+    ASSERT_EQ(v.size(), static_cast<std::size_t>(2 * D + 3));
+    EXPECT_EQ(v[0], i - 1);
+    EXPECT_EQ(v[1], 0);
+    double len2 = 0;
+    for (int k = 0; k < D; ++k) len2 += (v[2 + D + k] - v[2 + k]) * (v[2 + D + k] - v[2 + k]);
+    const double radius = v[2 + 2 * D];
+    EXPECT_GE(radius, 0.5 * 0.4 * (1 - 1e-12));  // circumscribed radius U[0.4, 0.6], radius = half of it
+    EXPECT_LE(radius, 0.5 * 0.6 * (1 + 1e-12));
+    EXPECT_NEAR(std::sqrt(len2), 2 * radius, 1e-9 * radius) << lines[static_cast<std::size_t>(i)];
+  }
+
+  // JSON: parses, names the shapes, one entry per particle.
+  EXPECT_EQ(python("import json,sys; d=json.load(open(sys.argv[1])); "
+                   "assert 'shapes' in d and d['shapes'][0]['kind'] == 'spherocylinder', d.get('shapes'); "
+                   "assert len(d['particles']) == " + std::to_string(n) + "; assert d['dimension'] == " + std::to_string(D),
+                   dir.work() / "out/caps.json"),
+            0);
+  // VTU and its surfaces companion.
+  for (const char* f : {"out/caps.vtu", "out/caps.surfaces.vtu"}) {
+    const std::string text = read_bytes(dir.work() / f);
+    EXPECT_NE(text.find("<VTKFile"), std::string::npos) << f;
+    EXPECT_NE(text.find("UnstructuredGrid"), std::string::npos) << f;
+  }
+  // The run record: the shape counters.
+  EXPECT_EQ(python("import json,sys; d=json.load(open(sys.argv[1])); c=d['counters']; "
+                   "assert 'fcl_queries' in c and 'minimisations' in c, c; "
+                   "assert c['minimisations'] > 0 and c['solves'] > 0, c; assert d['n'] == " + std::to_string(n),
+                   dir.work() / "out/rec.json"),
+            0);
+}
+
+TEST_P(CliShapes, SameSeedSameCsv) {
+  const int D = GetParam();
+  TempDir dir;
+  write_bytes(dir.work() / "caps.yaml", capsule_scene(D, D == 2 ? 20 : 10));
+  ASSERT_EQ(run_frontpack(dir, "pack caps.yaml -q -o a.csv").exit_code, 0);
+  ASSERT_EQ(run_frontpack(dir, "pack caps.yaml -q -o b.csv").exit_code, 0);
+  ASSERT_EQ(run_frontpack(dir, "pack caps.yaml -q -o c.csv --seed 6").exit_code, 0);
+  const std::string a = read_bytes(dir.work() / "a.csv");
+  EXPECT_GT(lines_of(a).size(), 5u);
+  EXPECT_EQ(a, read_bytes(dir.work() / "b.csv"));
+  EXPECT_NE(a, read_bytes(dir.work() / "c.csv"));
+}
+
+TEST_P(CliShapes, YadeCannotHoldCapsules) {
+  const int D = GetParam();
+  TempDir dir;
+  write_bytes(dir.work() / "caps.yaml", capsule_scene(D, 5));
+  const auto before = listing(dir.work());
+  for (const std::string args : {"pack caps.yaml -o caps.txt --format yade", "pack caps.yaml -o caps.yade"}) {
+    const RunResult r = run_frontpack(dir, args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.out << r.err;
+    EXPECT_NE(r.err.find("yade"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("spherocylinder"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(listing(dir.work()), before) << "nothing may be written";
+  }
+  // In the scene's own output list too: the other outputs are not written either.
+  write_bytes(dir.work() / "caps2.yaml", capsule_scene(D, 5) + "  - {format: yade, path: caps.txt}\n");
+  fs::create_directories(dir.work() / "out");
+  const auto before2 = listing(dir.work());
+  const RunResult r = run_frontpack(dir, "pack caps2.yaml");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("yade"), std::string::npos) << r.err;
+  EXPECT_EQ(listing(dir.work()), before2);
+}
+
+INSTANTIATE_TEST_SUITE_P(Dimensions, CliShapes, ::testing::Values(2, 3),
+                         [](const auto& info) { return std::to_string(info.param) + "D"; });
+
+/// The scene is refused with exit 2, the message naming bad.yaml:line: and the key, nothing written.
+void expect_shape_refused(const std::string& text, int line, const std::string& key, const std::string& also = "") {
+  TempDir dir;
+  write_bytes(dir.work() / "bad.yaml", text);
+  const auto before = listing(dir.work());
+  const RunResult r = run_frontpack(dir, "pack bad.yaml -o out.csv");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("bad.yaml:" + std::to_string(line) + ":"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("key '" + key + "'"), std::string::npos) << r.err;
+  if (!also.empty()) EXPECT_NE(r.err.find(also), std::string::npos) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(listing(dir.work()), before);
+}
+
+const std::string kShapeHead = "dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [4, 4, 4]}\nparticles:\n";  // lines 1-3
+
+TEST(CliShapesRefused, UnknownFamily) {
+  expect_shape_refused(kShapeHead + "  - shape: capsul\n    size: {distribution: uniform, min: 0.4, max: 0.6}\n", 4,
+                       "particles[0].shape", "capsul");
+}
+
+TEST(CliShapesRefused, BadAspectRatio) {
+  for (const std::string bad : {"1.5", "0", "-0.2", "wide"}) {
+    SCOPED_TRACE(bad);
+    expect_shape_refused(kShapeHead + "  - shape: spherocylinder\n    size: {distribution: uniform, min: 0.4, max: 0.6}\n"
+                                      "    aspect_ratio: " + bad + "\n",
+                         6, "particles[0].aspect_ratio", "aspect_ratio");
+  }
+}
+
+TEST(CliShapesRefused, FamilyMissingInTwoD) {
+  expect_shape_refused("dimension: 2\ncontainer: {type: rectangle, min: [0, 0], max: [4, 4]}\nparticles:\n"
+                       "  - shape: cylinder\n    aspect_ratio: 1\n    size: {distribution: uniform, min: 0.4, max: 0.6}\n",
+                       4, "particles[0].shape", "cylinder");
+}
+
+}  // namespace
+}  // namespace fptest
