@@ -1,6 +1,7 @@
 #include "cli/pack_command.hpp"
 
 #include "cli/progress_line.hpp"
+#include "cli/run_record_start.hpp"
 #include "cli/shape_pack_command.hpp"
 
 #include <chrono>
@@ -80,24 +81,8 @@ int run(const Scene& scene, const PackCommandOptions& o) {
   const ContactStats& cs = a.coordination;
   const double metrics_seconds = since(t_metrics);
 
-  RunRecord rec;
-  rec.version = kVersion;
-  rec.scene_path = scene.source_path;
-  rec.scene_text = scene.source_text;
-  rec.seed = scene.seed;
-  rec.dimension = D;
-  rec.n = P.size();
-  rec.container_description = container.describe();
+  RunRecord rec = start_run_record<D>(scene, container, P.size());
   rec.distribution_description = scene.radii->describe();
-  {
-    const Aabb<D> b = container.bounds();
-    Aabb<3> b3;
-    b3.lo.setZero();
-    b3.hi.setZero();
-    b3.lo.template head<D>() = b.lo;
-    b3.hi.template head<D>() = b.hi;
-    rec.bounds = b3;
-  }
   rec.timings = {{"pack", res.seconds}, {"metrics", metrics_seconds}};
   rec.metrics = {{"volume_fraction_container", a.vf_container.vf.value},
                  {"volume_fraction_core", a.vf_core.vf.value},

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/progress_line.hpp"
+#include "cli/run_record_start.hpp"
 #include "contact/shape_validation.hpp"
 #include "core/io/output_format.hpp"
 #include "core/io/run_record.hpp"
@@ -49,27 +50,9 @@ int run_shape_pack(const Scene& scene, const PackCommandOptions& o) {
   const double vf = res.solid_measure / container.measure();
   const double n = static_cast<double>(P.size());
 
-  RunRecord rec;
-  rec.version = kVersion;
-  rec.scene_path = scene.source_path;
-  rec.scene_text = scene.source_text;
-  rec.seed = scene.seed;
-  rec.dimension = D;
-  rec.n = P.size();
-  rec.container_description = container.describe();
-  {
-    std::string d;
-    for (const ShapeTemplate<D>& t : resolve_templates<D>(scene))
-      d += (d.empty() ? "" : "; ") + t.family + " " + t.size->describe();
-    rec.distribution_description = d;
-    const Aabb<D> b = container.bounds();
-    Aabb<3> b3;
-    b3.lo.setZero();
-    b3.hi.setZero();
-    b3.lo.template head<D>() = b.lo;
-    b3.hi.template head<D>() = b.hi;
-    rec.bounds = b3;
-  }
+  RunRecord rec = start_run_record<D>(scene, container, P.size());
+  for (const ShapeTemplate<D>& t : resolve_templates<D>(scene))
+    rec.distribution_description += (rec.distribution_description.empty() ? "" : "; ") + t.family + " " + t.size->describe();
   const MinimisationStats& ms = res.minimisation;
   rec.timings = {{"pack", res.seconds}, {"validation", check_seconds}};
   rec.metrics = {{"volume_fraction_container", vf},

@@ -35,6 +35,7 @@
 #include "core/io/scene.hpp"
 #include "core/sampling/radius_distribution.hpp"
 #include "core/sampling/rng.hpp"
+#include "front/front_parts.hpp"
 #include "front/pack_result.hpp"
 
 namespace fp {
@@ -98,11 +99,8 @@ class AdvancingFront {
   }
 
  private:
-  struct FrontEntry {
-    double key;
-    int id;
-    bool operator<(const FrontEntry& o) const { return key != o.key ? key > o.key : id > o.id; }  // min-heap
-  };
+  using FrontEntry = front_parts::FrontEntry;
+  using Neighbour = front_parts::Neighbour;
 
   static Aabb<D> grid_domain(const Container<D>& c, const RadiusDistribution& d) {
     Aabb<D> b = c.bounds();
@@ -175,37 +173,18 @@ class AdvancingFront {
     const double r_seed = pool_[k_seed];
     const Aabb<D> box = container_.bounds();
     // About 2 r_max between lattice points; coarser for a huge container (at most 2^24 points).
-    double h = 2 * dist_.r_max();
-    std::int64_t dims[D];
-    for (;;) {
-      double points = 1;
-      for (int a = 0; a < D; ++a) {
-        dims[a] = static_cast<std::int64_t>(std::floor(box.size()[a] / h)) + 1;
-        points *= static_cast<double>(dims[a]);
-      }
-      if (points <= double(1 << 24)) break;
-      h *= 1.26;
-    }
     bool reopened = false, found = false;
     Vec<D> best;
     double best_d2 = std::numeric_limits<double>::infinity();
-    std::int64_t idx[D] = {};
-    for (std::int64_t flat = 0;; ++flat) {
-      Vec<D> p;
-      for (int a = 0; a < D; ++a) p[a] = box.lo[a] + 0.5 * (box.size()[a] - (dims[a] - 1) * h) + idx[a] * h;
-      if (container_.contains_ball(p, r_seed, tol_)) {
-        bool empty = true;
-        grid_.for_each_within(p, r_seed, [&](int, const Vec<D>&, double, double) { empty = false; });
-        if (empty) {
-          if (voids_reopened_.insert(flat).second) reopened |= reopen_around(p, 3 * r_seed, P);
-          const double d2 = (p - seed_point_).squaredNorm();
-          if (d2 < best_d2) best_d2 = d2, best = p, found = true;
-        }
-      }
-      int a = 0;
-      while (a < D && ++idx[a] == dims[a]) idx[a++] = 0;
-      if (a == D) break;
-    }
+    front_parts::for_each_lattice_point<D>(box, 2 * dist_.r_max(), double(1 << 24), [&](std::int64_t flat, const Vec<D>& p) {
+      if (!container_.contains_ball(p, r_seed, tol_)) return;
+      bool empty = true;
+      grid_.for_each_within(p, r_seed, [&](int, const Vec<D>&, double, double) { empty = false; });
+      if (!empty) return;
+      if (voids_reopened_.insert(flat).second) reopened |= reopen_around(p, 3 * r_seed, P);
+      const double d2 = (p - seed_point_).squaredNorm();
+      if (d2 < best_d2) best_d2 = d2, best = p, found = true;
+    });
     if (reopened) {
       ++res.counters.voids_reopened;
       return true;
@@ -335,16 +314,7 @@ class AdvancingFront {
     return r;
   }
 
-  Vec<D> random_unit() {
-    if constexpr (D == 2) {
-      const double phi = 2 * kPi * rng_.uniform01();
-      return Vec2(std::cos(phi), std::sin(phi));
-    } else {
-      const double z = 2 * rng_.uniform01() - 1, phi = 2 * kPi * rng_.uniform01();
-      const double s = std::sqrt(std::max(0.0, 1 - z * z));
-      return Vec3(s * std::cos(phi), s * std::sin(phi), z);
-    }
-  }
+  Vec<D> random_unit() { return front_parts::random_unit<D>(rng_); }
 
   /// Step 2.1-2.2 for one s0: returns true if a particle was placed.
   bool try_place_around(int s0, Packing<D>& P, PackResult<D>& res) {
@@ -397,10 +367,7 @@ class AdvancingFront {
     grid_.for_each_within(c0, r0 + 2 * r, [&](int id, const Vec<D>&, double rk, double d2) {
       if (id != s0) nb_.push_back({std::sqrt(d2) - r0 - rk, id});
     });
-    if (opt_.pair_order == PairOrder::NearestFirst)
-      std::sort(nb_.begin(), nb_.end(), [](const Neighbour& a, const Neighbour& b) { return a.gap < b.gap || (a.gap == b.gap && a.id < b.id); });
-    else  // particle index order (the grid's visiting order would favour a direction of space)
-      std::sort(nb_.begin(), nb_.end(), [](const Neighbour& a, const Neighbour& b) { return a.id < b.id; });
+    front_parts::order_neighbours(nb_, opt_.pair_order);
     res.counters.max_neighbours = std::max<std::uint64_t>(res.counters.max_neighbours, nb_.size());
     walls_.clear();
     if (opt_.walls_as_bodies) {
@@ -518,10 +485,6 @@ class AdvancingFront {
     return false;
   }
 
-  struct Neighbour {
-    double gap;
-    int id;
-  };
 
   const Container<D>& container_;
   const RadiusDistribution& dist_;

@@ -14,6 +14,7 @@
 #include "contact/shape_containment.hpp"
 #include "contact/solver_registry.hpp"
 #include "core/geometry/neighbour_grid.hpp"
+#include "front/front_parts.hpp"
 
 namespace fp {
 namespace {
@@ -77,15 +78,8 @@ class ShapeFront {
   }
 
  private:
-  struct FrontEntry {
-    double key;
-    int id;
-    bool operator<(const FrontEntry& o) const { return key != o.key ? key > o.key : id > o.id; }  // min-heap
-  };
-  struct Neighbour {
-    double gap;  // between circumscribed spheres
-    int id;
-  };
+  using FrontEntry = front_parts::FrontEntry;
+  using Neighbour = front_parts::Neighbour;
   static constexpr std::size_t kMaxWallBodies = 4;
 
   static double min_bounding(const std::vector<ShapeTemplate<D>>& ts) {
@@ -180,16 +174,7 @@ class ShapeFront {
 
   bool fits(const Particle<D>& p) const { return inside_container(p) && free_of_overlap(p); }
 
-  Vec<D> random_unit() {
-    if constexpr (D == 2) {
-      const double phi = 2 * kPi * rng_.uniform01();
-      return Vec2(std::cos(phi), std::sin(phi));
-    } else {
-      const double z = 2 * rng_.uniform01() - 1, phi = 2 * kPi * rng_.uniform01();
-      const double s = std::sqrt(std::max(0.0, 1 - z * z));
-      return Vec3(s * std::cos(phi), s * std::sin(phi), z);
-    }
-  }
+  Vec<D> random_unit() { return front_parts::random_unit<D>(rng_); }
 
   /// Step 1 of Pseudocode 1 for any shape: the largest pooled draft at the seed point (slid
   /// towards the interior point where it does not fit), then D-1 drafts brought along random
@@ -254,47 +239,29 @@ class ShapeFront {
   /// point. False when there is no void left.
   bool resume_at_voids(ShapePackResult<D>& res) {
     const Aabb<D> box = container_.bounds();
-    double h = r_max_;
-    std::int64_t dims[D];
-    for (;;) {
-      double points = 1;
-      for (int a = 0; a < D; ++a) {
-        dims[a] = static_cast<std::int64_t>(std::floor(box.size()[a] / h)) + 1;
-        points *= static_cast<double>(dims[a]);
-      }
-      if (points <= double(1 << 20)) break;
-      h *= 1.26;
-    }
     bool reopened = false, found = false;
     Vec<D> best;
     std::size_t best_k = 0;
     double best_d2 = std::numeric_limits<double>::infinity();
     if (failed_radius_.size() < res.packing.size()) failed_radius_.resize(res.packing.size(), std::numeric_limits<double>::infinity());
-    std::int64_t idx[D] = {};
-    for (std::int64_t flat = 0;; ++flat) {
-      Vec<D> p;
-      for (int a = 0; a < D; ++a) p[a] = box.lo[a] + 0.5 * (box.size()[a] - (dims[a] - 1) * h) + idx[a] * h;
+    front_parts::for_each_lattice_point<D>(box, r_max_, double(1 << 20), [&](std::int64_t flat, const Vec<D>& p) {
+      if (!(container_.signed_distance(p) < 0)) return;
       std::size_t k = pool_.size();
-      if (container_.signed_distance(p) < 0)
-        for (std::size_t q = 0; q < pool_.size() && k == pool_.size(); ++q)
-          if (fits(at(pool_[q], p))) k = q;
-      if (k < pool_.size()) {
-        if (voids_reopened_.insert(flat).second) {
-          grid_.for_each_within(p, 3 * pool_[k].bounding_radius(), [&](int id, const Vec<D>& c, double, double) {
-            failed_radius_[static_cast<std::size_t>(id)] = std::numeric_limits<double>::infinity();
-            if (in_front_[static_cast<std::size_t>(id)]) return;
-            in_front_[static_cast<std::size_t>(id)] = 1;
-            heap_.push({(c - seed_point_).squaredNorm(), id});
-            reopened = true;
-          });
-        }
-        const double d2 = (p - seed_point_).squaredNorm();
-        if (d2 < best_d2) best_d2 = d2, best = p, best_k = k, found = true;
+      for (std::size_t q = 0; q < pool_.size() && k == pool_.size(); ++q)
+        if (fits(at(pool_[q], p))) k = q;
+      if (k == pool_.size()) return;
+      if (voids_reopened_.insert(flat).second) {
+        grid_.for_each_within(p, 3 * pool_[k].bounding_radius(), [&](int id, const Vec<D>& c, double, double) {
+          failed_radius_[static_cast<std::size_t>(id)] = std::numeric_limits<double>::infinity();
+          if (in_front_[static_cast<std::size_t>(id)]) return;
+          in_front_[static_cast<std::size_t>(id)] = 1;
+          heap_.push({(c - seed_point_).squaredNorm(), id});
+          reopened = true;
+        });
       }
-      int a = 0;
-      while (a < D && ++idx[a] == dims[a]) idx[a++] = 0;
-      if (a == D) break;
-    }
+      const double d2 = (p - seed_point_).squaredNorm();
+      if (d2 < best_d2) best_d2 = d2, best = p, best_k = k, found = true;
+    });
     if (reopened) {
       ++res.counters.voids_reopened;
       return true;
@@ -339,10 +306,7 @@ class ShapeFront {
     grid_.for_each_within(c0, r0 + 2 * R, [&](int id, const Vec<D>&, double rk, double d2) {
       if (id != s0) nb_.push_back({std::sqrt(d2) - r0 - rk, id});
     });
-    if (opt_.pair_order == PairOrder::NearestFirst)
-      std::sort(nb_.begin(), nb_.end(), [](const Neighbour& a, const Neighbour& b) { return a.gap < b.gap || (a.gap == b.gap && a.id < b.id); });
-    else
-      std::sort(nb_.begin(), nb_.end(), [](const Neighbour& a, const Neighbour& b) { return a.id < b.id; });
+    front_parts::order_neighbours(nb_, opt_.pair_order);
     res.counters.max_neighbours = std::max<std::uint64_t>(res.counters.max_neighbours, nb_.size());
     walls_.clear();
     if (opt_.walls_as_bodies) {

@@ -11,48 +11,10 @@
 #include <vector>
 
 #include "core/io/atomic_file.hpp"
+#include "core/io/text_buffer.hpp"
 
 namespace fp {
 namespace {
-
-// Builds text in memory in blocks and hands them to the stream: one virtual call per block
-// instead of per number.
-class TextBuffer {
- public:
-  explicit TextBuffer(std::ostream& out) : out_(out) { buf_.reserve(kBlock + 256); }
-  ~TextBuffer() = default;
-
-  TextBuffer& number(double v) {
-    char tmp[32];
-    const auto res = std::to_chars(tmp, tmp + sizeof tmp, v);  // shortest round-trip form
-    buf_.append(tmp, res.ptr);
-    return *this;
-  }
-  TextBuffer& integer(std::uint64_t v) {
-    char tmp[24];
-    const auto res = std::to_chars(tmp, tmp + sizeof tmp, v);
-    buf_.append(tmp, res.ptr);
-    return *this;
-  }
-  TextBuffer& text(const std::string& s) {
-    buf_ += s;
-    return *this;
-  }
-  TextBuffer& ch(char c) {
-    buf_ += c;
-    if (c == '\n' && buf_.size() >= kBlock) flush();
-    return *this;
-  }
-  void flush() {
-    out_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
-    buf_.clear();
-  }
-
- private:
-  static constexpr std::size_t kBlock = 1 << 16;
-  std::ostream& out_;
-  std::string buf_;
-};
 
 template <int D>
 double coord(const Packing<D>& p, std::size_t i, int k) {

@@ -17,6 +17,7 @@
 #include <string_view>
 
 #include "core/io/atomic_file.hpp"
+#include "core/io/text_buffer.hpp"
 #include "shapes/spherocylinder_shape.hpp"
 
 namespace fp {
@@ -24,65 +25,6 @@ namespace {
 
 // ---- text ------------------------------------------------------------------------------
 
-// Builds text in memory in blocks and hands them to the stream (one virtual call per block).
-class TextBuffer {
- public:
-  explicit TextBuffer(std::ostream& out) : out_(out) { buf_.reserve(kBlock + 256); }
-
-  TextBuffer& number(double v) {
-    char tmp[32];
-    const auto res = std::to_chars(tmp, tmp + sizeof tmp, v);  // shortest round-trip form
-    buf_.append(tmp, res.ptr);
-    return *this;
-  }
-  /// JSON has no spelling for NaN and infinities: null.
-  TextBuffer& json_number(double v) {
-    if (!std::isfinite(v)) return text("null");
-    return number(v);
-  }
-  TextBuffer& integer(std::int64_t v) {
-    char tmp[24];
-    const auto res = std::to_chars(tmp, tmp + sizeof tmp, v);
-    buf_.append(tmp, res.ptr);
-    return *this;
-  }
-  TextBuffer& text(std::string_view s) {
-    buf_.append(s);
-    return *this;
-  }
-  TextBuffer& json_string(std::string_view s) {
-    buf_ += '"';
-    for (const char c : s) {
-      const auto u = static_cast<unsigned char>(c);
-      if (c == '"' || c == '\\') {
-        buf_ += '\\';
-        buf_ += c;
-      } else if (u < 0x20) {
-        char esc[8];
-        std::snprintf(esc, sizeof esc, "\\u%04x", u);
-        buf_ += esc;
-      } else {
-        buf_ += c;
-      }
-    }
-    buf_ += '"';
-    return *this;
-  }
-  TextBuffer& ch(char c) {
-    buf_ += c;
-    if (c == '\n' && buf_.size() >= kBlock) flush();
-    return *this;
-  }
-  void flush() {
-    out_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
-    buf_.clear();
-  }
-
- private:
-  static constexpr std::size_t kBlock = 1 << 16;
-  std::ostream& out_;
-  std::string buf_;
-};
 
 std::string producer(const RunRecord& rec) { return rec.version.empty() ? "frontpack" : "frontpack " + rec.version; }
 

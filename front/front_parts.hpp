@@ -1,0 +1,75 @@
+#pragma once
+// Pieces both advancing fronts (spheres: advancing_front.hpp; any shape: shape_front.cpp) use:
+// the front's heap entry, neighbour ordering, random directions and the lattice of void probes.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "core/geometry/vec.hpp"
+#include "core/io/scene.hpp"
+#include "core/sampling/rng.hpp"
+
+namespace fp::front_parts {
+
+/// A particle in F keyed by its squared distance to the seed point (min-heap order, ties by id).
+struct FrontEntry {
+  double key;
+  int id;
+  bool operator<(const FrontEntry& o) const { return key != o.key ? key > o.key : id > o.id; }
+};
+
+/// A neighbour of s0: gap between circumscribed spheres, particle id.
+struct Neighbour {
+  double gap;
+  int id;
+};
+
+/// Nearest first (ties by id), or particle index order (the grid's visiting order would favour a
+/// direction of space).
+inline void order_neighbours(std::vector<Neighbour>& nb, PairOrder order) {
+  if (order == PairOrder::NearestFirst)
+    std::sort(nb.begin(), nb.end(), [](const Neighbour& a, const Neighbour& b) { return a.gap < b.gap || (a.gap == b.gap && a.id < b.id); });
+  else
+    std::sort(nb.begin(), nb.end(), [](const Neighbour& a, const Neighbour& b) { return a.id < b.id; });
+}
+
+/// A uniformly distributed unit vector (2 draws in 3D, 1 in 2D).
+template <int D>
+Vec<D> random_unit(Rng& rng) {
+  if constexpr (D == 2) {
+    const double phi = 2 * kPi * rng.uniform01();
+    return Vec2(std::cos(phi), std::sin(phi));
+  } else {
+    const double z = 2 * rng.uniform01() - 1, phi = 2 * kPi * rng.uniform01();
+    const double s = std::sqrt(std::max(0.0, 1 - z * z));
+    return Vec3(s * std::cos(phi), s * std::sin(phi), z);
+  }
+}
+
+/// Points of spacing ~h (coarsened by 1.26x until there are at most `max_points`) centred in a
+/// box: where a front that ran empty looks for voids. Calls f(flat index, point) for each.
+template <int D, class F>
+void for_each_lattice_point(const Aabb<D>& box, double h, double max_points, F&& f) {
+  std::int64_t dims[D];
+  for (;;) {
+    double points = 1;
+    for (int a = 0; a < D; ++a) {
+      dims[a] = static_cast<std::int64_t>(std::floor(box.size()[a] / h)) + 1;
+      points *= static_cast<double>(dims[a]);
+    }
+    if (points <= max_points) break;
+    h *= 1.26;
+  }
+  std::int64_t idx[D] = {};
+  for (std::int64_t flat = 0;; ++flat) {
+    Vec<D> p;
+    for (int a = 0; a < D; ++a) p[a] = box.lo[a] + 0.5 * (box.size()[a] - (dims[a] - 1) * h) + idx[a] * h;
+    f(flat, p);
+    int a = 0;
+    while (a < D && ++idx[a] == dims[a]) idx[a++] = 0;
+    if (a == D) break;
+  }
+}
+
+}  // namespace fp::front_parts
