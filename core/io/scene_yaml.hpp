@@ -46,7 +46,7 @@
 //     contact_tolerance: in (0, 1e-3);  grid_cell_factor: >= 1;  hierarchical_grid_ratio: > 1;
 //     seed_point: [x, y(, z)] inside the container
 //     minimisation (particle templates only; MinimisationOptions):
-//       algorithm: slsqp | lbfgs | nelder-mead | cobyla | sbplx;  gap_tolerance: in (0, 0.1);
+//       algorithm: newton | slsqp | lbfgs | nelder-mead | cobyla | sbplx;  gap_tolerance: in (0, 0.1);
 //       max_evaluations: integer >= 10;  polish: bool
 //   stop:
 //     particles: integer > 0 (1e6 accepted);  volume_fraction: in (0, 1);  time: seconds > 0

@@ -452,7 +452,9 @@ TEST(ShapeChecks, DetectOverlapsAndProtrusions) {
       EXPECT_EQ(apart.intrusion, 0.0);
       EXPECT_GT(apart.gap_lower, 0.0) << apart.method;
       EXPECT_LE(apart.gap_lower, 1e-3 * (1 + 1e-6)) << apart.method;
-      if (apart.method != std::string("separating axes")) EXPECT_GE(apart.gap_lower, 1e-3 * (1 - 1e-6)) << apart.method;
+      if (apart.method != std::string("separating axes")) {
+        EXPECT_GE(apart.gap_lower, 1e-3 * (1 - 1e-6)) << apart.method;
+      }
     }
   // A particle across the reflex edge of the L prism: its hull is inside, the edge is in it.
   const PackSetup<3> setup = make_setup<3>(Where::NonConvex);
