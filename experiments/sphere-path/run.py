@@ -17,7 +17,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 import runkit  # noqa: E402
 
 HERE = Path(__file__).resolve().parent
-SCENES = [("valera-cube", 5), ("disks-million", 1), ("million", 1)]
+SCENES = [("valera-cube", 5), ("disks-million", 3), ("million", 3)]
 
 
 def run(binary, scene, folder):
