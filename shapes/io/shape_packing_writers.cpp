@@ -243,7 +243,7 @@ std::vector<int> weld(const std::vector<Vec2>& v, double tol) {
 template <int D>
 void particle_cells(const Particle<D>& q, std::size_t index, LocalCells& out) {
   out.clear();
-  const SurfaceMesh<D> m = q.shape->surface(kShapeSurfaceResolution);
+  const SurfaceMesh<D> m = q.shape->surface(kShapeSurfaceResolution<D>);
   const int nv = static_cast<int>(m.vertices.size());
   for (const auto& v : m.vertices) out.points.push_back(embed<D>(q.pose.to_world(v)));
   for (const auto& f : m.facets)

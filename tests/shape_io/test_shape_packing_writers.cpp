@@ -648,7 +648,7 @@ void check_vtu() {
   // Surfaces: one point per surface vertex; triangles (3D) or one polygon per outline loop (2D).
   std::size_t points = 0, cells = 0;
   for (const auto& q : p.particles) {
-    const auto m = q.shape->surface(kShapeSurfaceResolution);
+    const auto m = q.shape->surface(kShapeSurfaceResolution<D>);
     points += m.vertices.size();
     if constexpr (D == 3) cells += m.facets.size();
     else cells += std::string(q.shape->kind()) == "cluster" ? q.shape->hull_balls().size() : 1;
@@ -675,7 +675,7 @@ void check_vtu() {
     if (D == 3) {
       EXPECT_EQ(k, 3);
     } else {
-      EXPECT_GE(k, kShapeSurfaceResolution);  // a whole outline (or a cluster member's)
+      EXPECT_GE(k, kShapeSurfaceResolution<D>);  // a whole outline (or a cluster member's)
     }
     for (long long j = 0; j < k; ++j) {
       f = next();
