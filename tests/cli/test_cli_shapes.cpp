@@ -121,6 +121,20 @@ TEST_P(CliShapes, YadeCannotHoldCapsules) {
   EXPECT_EQ(listing(dir.work()), before2);
 }
 
+// The general front keeps F by distance to the seed point only: another `front` is refused
+// before any work rather than silently ignored.
+TEST_P(CliShapes, OnlyClosestFrontPick) {
+  const int D = GetParam();
+  TempDir dir;
+  write_bytes(dir.work() / "caps.yaml", capsule_scene(D, 5) + "packer: {front: random}\n");
+  fs::create_directories(dir.work() / "out");
+  const auto before = listing(dir.work());
+  const RunResult r = run_frontpack(dir, "pack caps.yaml");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("packer.front"), std::string::npos) << r.err;
+  EXPECT_EQ(listing(dir.work()), before);
+}
+
 INSTANTIATE_TEST_SUITE_P(Dimensions, CliShapes, ::testing::Values(2, 3),
                          [](const auto& info) { return std::to_string(info.param) + "D"; });
 
