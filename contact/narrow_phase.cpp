@@ -2,7 +2,6 @@
 
 #include <fcl/geometry/shape/convex.h>
 #include <fcl/geometry/shape/sphere.h>
-#include <fcl/geometry/shape/triangle_p.h>
 #include <fcl/narrowphase/distance.h>
 
 #include <algorithm>
@@ -334,8 +333,8 @@ const typename NarrowPhase<D>::FclShape& NarrowPhase<D>::fcl_of(const ShapePtr<D
     slot->parts = s->fcl_parts();
     const std::string kind = s->kind();
     if (kind == "cluster") slot->balls = s->hull_balls();
-    if (kind == "polygon" || kind == "polyhedron") {
-      for (const Ball<D>& v : s->hull_balls()) slot->vertices.push_back(v.center);  // a polytope's hull balls are its vertices
+    if (kind == "polygon" || kind == "polyhedron" || kind == "facet") {
+      for (const Ball<D>& v : s->hull_balls()) slot->vertices.push_back(v.center);  // a polytope's (facet's) hull balls are its vertices
       // Directions up to sign, each once (a triangulated cube has 3 face normals, not 12).
       auto add_unique = [](std::vector<Vec<D>>& list, const Vec<D>& v) {
         for (const Vec<D>& w : list)
@@ -475,85 +474,6 @@ Gap<D> NarrowPhase<D>::gap(const Wall<D>& w, const Particle<D>& b) const {
     }
   }
   return {};
-}
-
-template <int D>
-Gap<D> NarrowPhase<D>::gap_to_facet(const std::array<Vec<D>, D>& facet, const Particle<D>& b) const {
-  if constexpr (D == 2) {
-    // A segment is a spherocylinder of radius 0: analytic for ball-made shapes, FCL otherwise.
-    Particle<2> seg;
-    const Vec2 d = facet[1] - facet[0];
-    seg.shape = std::make_shared<SpherocylinderShape<2>>(0.5 * d.norm(), 0.0);
-    seg.pose.position = 0.5 * (facet[0] + facet[1]);
-    seg.pose.rotation = rotation_2d(std::atan2(d.y(), d.x()));
-    const Gap<2> g = gap(seg, b);
-    forget(seg.shape.get());
-    return g;
-  } else {
-    // The facet as a flat fcl::Convex (both sides): FCL's distance has no entry for TriangleP
-    // (it returned DBL_MAX for every shape, so no facet was ever seen crossing a particle).
-    auto tri_vertices = std::make_shared<const std::vector<Vec3>>(std::vector<Vec3>{facet[0], facet[1], facet[2]});
-    auto tri_faces = std::make_shared<const std::vector<int>>(std::vector<int>{3, 0, 1, 2, 3, 0, 2, 1});
-    const fcl::Convex<double> tri(tri_vertices, 2, tri_faces);
-    const FclShape& fb = fcl_of(b.shape);
-    fcl::DistanceRequestd request;
-    request.enable_nearest_points = true;
-    request.enable_signed_distance = false;
-    request.gjk_solver_type = fcl::GST_LIBCCD;
-    request.distance_tolerance = 1e-10 * b.bounding_radius();
-    // The triangle as a particle-like convex piece for support_gap.
-    struct TriangleShape final : Shape<3> {
-      std::array<Vec3, 3> v;
-      const char* kind() const override { return "triangle"; }
-      double measure() const override { return 0; }
-      double bounding_radius() const override { return 0; }
-      double inscribed_radius() const override { return 0; }
-      Vec3 support(const Vec3& u) const override {
-        int k = 0;
-        for (int q = 1; q < 3; ++q)
-          if (u.dot(v[static_cast<std::size_t>(q)]) > u.dot(v[static_cast<std::size_t>(k)])) k = q;
-        return v[static_cast<std::size_t>(k)];
-      }
-      bool contains(const Vec3&) const override { return false; }
-      std::vector<Ball<3>> hull_balls() const override { return {}; }
-      SurfaceMesh<3> surface(int) const override { return {}; }
-      std::vector<FclPart<3>> fcl_parts() const override { return {}; }
-      ShapePtr<3> scaled(double) const override { return nullptr; }
-      std::string definition_json() const override { return "{}"; }
-    };
-    Gap<3> best{std::numeric_limits<double>::infinity(), Vec3::Zero()};
-    for (std::size_t j = 0; j < fb.parts.size(); ++j) {
-      const FclPart<3>& pb = fb.parts[j];
-      fcl::DistanceResultd result;
-      ++fcl_queries_;
-      const fcl::Transform3d tb = part_transform(b.pose, pb);
-      fcl::distance(&tri, fcl::Transform3d::Identity(), pb.geometry.get(), tb, request, result);
-      Gap<3> g;
-      if (result.min_distance > 1e-6 * b.bounding_radius()) {  // see fcl_gap: GJK's ~0 may be an overlap
-        g.value = result.min_distance;
-        g.normal = unit_or<3>(Vec3(result.nearest_points[1] - result.nearest_points[0]), Vec3(b.pose.position - facet[0]));
-      } else {
-        auto t = std::make_shared<TriangleShape>();
-        t->v = facet;
-        Particle<3> tp;
-        tp.shape = t;
-        std::vector<Vec3> axes{(facet[1] - facet[0]).cross(facet[2] - facet[0]).normalized()};
-        for (const Vec3& n : fb.normals) axes.push_back(b.pose.rotation * n);
-        const ConvexPiece<3> A{&tp, nullptr};
-        const ConvexPiece<3> B{&b, fb.balls.empty() ? nullptr : &fb.balls[j]};
-        for (const Vec3& e : fb.edges)
-          for (int q = 0; q < 3; ++q) {
-            const Vec3 n = (facet[static_cast<std::size_t>((q + 1) % 3)] - facet[static_cast<std::size_t>(q)]).cross(b.pose.rotation * e);
-            if (n.squaredNorm() > 1e-20) axes.push_back(n.normalized());
-          }
-        g = support_gap<3>(A, B, b.pose.position - (facet[0] + facet[1] + facet[2]) / 3.0, axes, !fb.normals.empty());
-        tighten_by_pulls<3>(&tri, fcl::Transform3d::Identity(), pb.geometry.get(), tb, request, b.bounding_radius(),
-                            1e-6 * b.bounding_radius(), g, fcl_queries_);
-      }
-      if (g.value < best.value) best = g;
-    }
-    return best;
-  }
 }
 
 template class NarrowPhase<2>;

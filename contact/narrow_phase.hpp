@@ -53,10 +53,6 @@ class NarrowPhase {
   /// curved shapes with circumscribing hull balls. Vertex walls (reflex corners) use FCL.
   Gap<D> gap(const Wall<D>& wall, const Particle<D>& b) const;
 
-  /// Signed gap between a boundary facet of a container (3D: a triangle; 2D: a segment) and a
-  /// particle: how far the particle is from crossing the container's surface there.
-  Gap<D> gap_to_facet(const std::array<Vec<D>, D>& facet, const Particle<D>& b) const;
-
   /// FCL distance queries made so far (the analytic paths do not count).
   std::uint64_t fcl_queries() const { return fcl_queries_; }
   /// Forgets the FCL geometry of one shape (a mobile draft that was not placed) or of all.

@@ -1,10 +1,14 @@
 #include "contact/shape_containment.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <memory>
 #include <limits>
 
 #include "core/geometry/mesh_container.hpp"
 #include "core/geometry/polygon_container.hpp"
+#include "shapes/facet_shape.hpp"
+#include "shapes/spherocylinder_shape.hpp"
 
 namespace fp {
 
@@ -13,9 +17,16 @@ ShapeContainment<D>::ShapeContainment(const Container<D>& container, const Narro
     : container_(container), np_(narrow_phase) {
   if constexpr (D == 3) {
     if (const auto* mesh = dynamic_cast<const MeshContainer*>(&container))  // any mesh may be non-convex
-      for (const auto& t : mesh->triangles())
-        facets_.push_back({mesh->vertices()[static_cast<std::size_t>(t[0])], mesh->vertices()[static_cast<std::size_t>(t[1])],
-                           mesh->vertices()[static_cast<std::size_t>(t[2])]});
+      for (const auto& t : mesh->triangles()) {
+        const std::array<Vec3, 3> v = {mesh->vertices()[static_cast<std::size_t>(t[0])],
+                                       mesh->vertices()[static_cast<std::size_t>(t[1])],
+                                       mesh->vertices()[static_cast<std::size_t>(t[2])]};
+        Particle<3> f;
+        f.pose.position = (v[0] + v[1] + v[2]) / 3.0;
+        f.shape = std::make_shared<FacetShape>(std::array<Vec3, 3>{v[0] - f.pose.position, v[1] - f.pose.position,
+                                                                   v[2] - f.pose.position});
+        facets_.push_back(std::move(f));
+      }
   } else {
     if (const auto* poly = dynamic_cast<const PolygonContainer*>(&container)) {
       const auto& v = poly->vertices();
@@ -23,7 +34,14 @@ ShapeContainment<D>::ShapeContainment(const Container<D>& container, const Narro
       bool convex = true;
       for (int i = 0; i < n; ++i) convex &= !poly->is_reflex(i);
       if (!convex)
-        for (int i = 0; i < n; ++i) facets_.push_back({v[static_cast<std::size_t>(i)], v[static_cast<std::size_t>((i + 1) % n)]});
+        for (int i = 0; i < n; ++i) {  // an edge is a spherocylinder of radius 0
+          const Vec2 a = v[static_cast<std::size_t>(i)], b = v[static_cast<std::size_t>((i + 1) % n)];
+          Particle<2> f;
+          f.shape = std::make_shared<SpherocylinderShape<2>>(0.5 * (b - a).norm(), 0.0);
+          f.pose.position = 0.5 * (a + b);
+          f.pose.rotation = rotation_2d(std::atan2(b.y() - a.y(), b.x() - a.x()));
+          facets_.push_back(std::move(f));
+        }
     }
   }
 }
@@ -39,7 +57,7 @@ double ShapeContainment<D>::protrusion(const Particle<D>& p) const {
   container_.walls_near(p.pose.position, p.bounding_radius(), near_);
   for (const Wall<D>& w : near_) {
     if (w.kind != WallKind::Plane || w.id < 0 || static_cast<std::size_t>(w.id) >= facets_.size()) continue;
-    const double g = np_.gap_to_facet(facets_[static_cast<std::size_t>(w.id)], p).value;
+    const double g = np_.gap(facets_[static_cast<std::size_t>(w.id)], p).value;
     beyond = std::max(beyond, -g);
   }
   return beyond;

@@ -5,7 +5,6 @@
 //  * for containers that may be non-convex (meshes, polygons with a reflex corner), also no
 //    boundary facet (triangle / edge) near the particle reaching into it (narrow phase against
 //    the facet): with its hull balls inside and no facet crossing it, the particle is inside.
-#include <array>
 #include <vector>
 
 #include "contact/narrow_phase.hpp"
@@ -28,7 +27,9 @@ class ShapeContainment {
  private:
   const Container<D>& container_;
   const NarrowPhase<D>& np_;
-  std::vector<std::array<Vec<D>, D>> facets_;  ///< boundary facets of a non-convex container (by wall id)
+  /// Boundary facets of a non-convex container, by wall id, as particles of zero thickness
+  /// (3D: FacetShape; 2D: radius-0 spherocylinders), built once.
+  std::vector<Particle<D>> facets_;
   mutable std::vector<Wall<D>> near_;
 };
 
