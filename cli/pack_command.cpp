@@ -101,16 +101,10 @@ int run(const Scene& scene, const PackCommandOptions& o) {
   for (int a_ = 0; a_ < D; ++a_)
     rec.metrics.emplace_back(std::string("reference_sphere_center_") + axis_names[a_], a.reference_center[a_]);
   rec.analysis_json = analysis_json(a);
-  const FrontCounters& c = res.counters;
-  rec.counters = {{"front_picks", c.front_picks},         {"front_removals", c.front_removals},
-                  {"pairs_considered", c.pairs_considered}, {"pairs_pruned", c.pairs_pruned},
-                  {"solves", c.solves},                   {"candidates", c.candidates},
-                  {"rejected_overlap", c.rejected_overlap}, {"rejected_container", c.rejected_container},
-                  {"wall_bodies", c.wall_bodies},         {"radii_drawn", c.radii_drawn},
-                  {"radii_unplaced", c.radii_unplaced},   {"max_neighbours", c.max_neighbours},
-                  {"voids_reopened", c.voids_reopened},   {"voids_seeded", c.voids_seeded},
-                  {"contacts", cs.contacts},              {"wall_contacts", cs.wall_contacts},
-                  {"rattlers", cs.rattlers},              {"grid_bytes", res.grid_bytes}};
+  rec.counters = front_counter_entries(res.counters);
+  const std::vector<std::pair<std::string, std::uint64_t>> extra = {
+      {"contacts", cs.contacts}, {"wall_contacts", cs.wall_contacts}, {"rattlers", cs.rattlers}, {"grid_bytes", res.grid_bytes}};
+  rec.counters.insert(rec.counters.end(), extra.begin(), extra.end());
   rec.info = {{"stop_reason", to_string(res.stop)}, {"validation", vr.ok ? "ok" : "FAILED"}};
 
   const auto t_write = Clock::now();
@@ -119,10 +113,7 @@ int run(const Scene& scene, const PackCommandOptions& o) {
   const double write_seconds = since(t_write);
 
   if (!o.quiet) {
-    std::printf("frontpack %s   scene %s   seed %llu   %dD\n", kVersion, scene.source_path.c_str(),
-                static_cast<unsigned long long>(scene.seed), D);
-    std::printf("  container      %s, %s %.6g\n", container.describe().c_str(), D == 3 ? "volume" : "area",
-                container.measure());
+    print_run_header<D>(scene, container);
     std::printf("  radii          %s\n", scene.radii->describe().c_str());
     std::printf("  particles      %zu   (stop: %s)\n", P.size(), to_string(res.stop));
     std::string table = "  " + a.summary();

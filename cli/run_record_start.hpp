@@ -1,11 +1,18 @@
 #pragma once
-// The part of a run record every `pack` fills the same way, spheres or shapes: what was run
-// (version, scene, seed, dimension) and the container (description, bounds; 2D with z = 0).
+// The parts of a run record and summary every `pack` fills the same way, spheres or shapes: what
+// was run (version, scene, seed, dimension), the container (description, bounds; 2D with z = 0)
+// and the front's counters.
 #include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "core/geometry/container.hpp"
 #include "core/io/run_record.hpp"
 #include "core/io/scene.hpp"
+#include "front/pack_result.hpp"
 #include "frontpack/version.hpp"
 
 namespace fp {
@@ -28,6 +35,26 @@ RunRecord start_run_record(const Scene& scene, const Container<D>& container, st
   b3.hi.template head<D>() = b.hi;
   rec.bounds = b3;
   return rec;
+}
+
+/// The advancing front's counters, in the run record's order (both fronts fill FrontCounters).
+inline std::vector<std::pair<std::string, std::uint64_t>> front_counter_entries(const FrontCounters& c) {
+  return {{"front_picks", c.front_picks},         {"front_removals", c.front_removals},
+          {"pairs_considered", c.pairs_considered}, {"pairs_pruned", c.pairs_pruned},
+          {"solves", c.solves},                   {"candidates", c.candidates},
+          {"rejected_overlap", c.rejected_overlap}, {"rejected_container", c.rejected_container},
+          {"wall_bodies", c.wall_bodies},         {"radii_drawn", c.radii_drawn},
+          {"radii_unplaced", c.radii_unplaced},   {"max_neighbours", c.max_neighbours},
+          {"voids_reopened", c.voids_reopened},   {"voids_seeded", c.voids_seeded}};
+}
+
+/// The first two lines of the summary: what was run, and in which container.
+template <int D>
+void print_run_header(const Scene& scene, const Container<D>& container) {
+  std::printf("frontpack %s   scene %s   seed %llu   %dD\n", kVersion, scene.source_path.c_str(),
+              static_cast<unsigned long long>(scene.seed), D);
+  std::printf("  container      %s, %s %.6g\n", container.describe().c_str(), D == 3 ? "volume" : "area",
+              container.measure());
 }
 
 }  // namespace fp

@@ -12,7 +12,6 @@
 #include "core/io/output_format.hpp"
 #include "core/io/run_record.hpp"
 #include "front/pack_shapes_scene.hpp"
-#include "frontpack/version.hpp"
 #include "shapes/io/shape_packing_writers.hpp"
 
 namespace fp {
@@ -57,7 +56,7 @@ int run_shape_pack(const Scene& scene, const PackCommandOptions& o) {
   const double n = static_cast<double>(P.size());
 
   RunRecord rec = start_run_record<D>(scene, container, P.size());
-  for (const ShapeTemplate<D>& t : resolve_templates<D>(scene))
+  for (const ParticleTemplateSpec& t : scene.particle_templates)
     rec.distribution_description += (rec.distribution_description.empty() ? "" : "; ") + t.family + " " + t.size->describe();
   const MinimisationStats& ms = res.minimisation;
   rec.timings = {{"pack", res.seconds}, {"validation", check_seconds}};
@@ -68,17 +67,13 @@ int run_shape_pack(const Scene& scene, const PackCommandOptions& o) {
                  {"max_outside_over_r", v.max_outside_rel},
                  {"particles_per_second", res.seconds > 0 ? n / res.seconds : 0.0}};
   const FrontCounters& c = res.counters;
-  rec.counters = {{"front_picks", c.front_picks},         {"front_removals", c.front_removals},
-                  {"pairs_considered", c.pairs_considered}, {"pairs_pruned", c.pairs_pruned},
-                  {"solves", c.solves},                   {"analytic_solves", res.analytic_solves},
-                  {"candidates", c.candidates},           {"rejected_overlap", c.rejected_overlap},
-                  {"rejected_container", c.rejected_container}, {"wall_bodies", c.wall_bodies},
-                  {"radii_drawn", c.radii_drawn},         {"radii_unplaced", c.radii_unplaced},
-                  {"max_neighbours", c.max_neighbours},   {"voids_reopened", c.voids_reopened},
-                  {"voids_seeded", c.voids_seeded},       {"minimisations", ms.minimisations},
-                  {"gap_evaluations", ms.evaluations},    {"minima_rejected", ms.rejected_gap},
-                  {"fcl_queries", res.fcl_queries},       {"contacts", v.contacts},
-                  {"wall_contacts", v.wall_contacts},     {"pairs_checked", v.pairs_checked}};
+  rec.counters = front_counter_entries(c);
+  const std::vector<std::pair<std::string, std::uint64_t>> extra = {
+      {"analytic_solves", res.analytic_solves}, {"minimisations", ms.minimisations},
+      {"gap_evaluations", ms.evaluations},      {"minima_rejected", ms.rejected_gap},
+      {"fcl_queries", res.fcl_queries},         {"contacts", v.contacts},
+      {"wall_contacts", v.wall_contacts},       {"pairs_checked", v.pairs_checked}};
+  rec.counters.insert(rec.counters.end(), extra.begin(), extra.end());
   rec.info = {{"stop_reason", to_string(res.stop)},
               {"validation", v.ok ? "ok" : "FAILED"},
               {"minimisation_algorithm", scene.packer.minimisation.algorithm}};
@@ -89,10 +84,7 @@ int run_shape_pack(const Scene& scene, const PackCommandOptions& o) {
   const double write_seconds = since(t_write);
 
   if (!o.quiet) {
-    std::printf("frontpack %s   scene %s   seed %llu   %dD\n", kVersion, scene.source_path.c_str(),
-                static_cast<unsigned long long>(scene.seed), D);
-    std::printf("  container      %s, %s %.6g\n", container.describe().c_str(), D == 3 ? "volume" : "area",
-                container.measure());
+    print_run_header<D>(scene, container);
     std::printf("  particles      %s\n", rec.distribution_description.c_str());
     std::printf("  placed         %zu   (stop: %s)\n", P.size(), to_string(res.stop));
     std::printf("  %s     %.4f of the container\n", D == 3 ? "volume fraction" : "area fraction  ", vf);
