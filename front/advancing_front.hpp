@@ -362,18 +362,8 @@ class AdvancingFront {
 
   /// V = particles within r0 + r_s + 2r of c0 (paper's definition), plus walls within 2r.
   void gather_neighbours(int s0, const Vec<D>& c0, double r0, double r, const Packing<D>& P, PackResult<D>& res) {
-    nb_.clear();
-    // gap to s0: nearest-first order, and the candidate overlap test stops earliest this way
-    grid_.for_each_within(c0, r0 + 2 * r, [&](int id, const Vec<D>&, double rk, double d2) {
-      if (id != s0) nb_.push_back({std::sqrt(d2) - r0 - rk, id});
-    });
-    front_parts::order_neighbours(nb_, opt_.pair_order);
-    res.counters.max_neighbours = std::max<std::uint64_t>(res.counters.max_neighbours, nb_.size());
-    walls_.clear();
-    if (opt_.walls_as_bodies) {
-      container_.walls_near(c0, r0 + 2 * r, walls_);
-      res.counters.wall_bodies += walls_.size();
-    }
+    // Nearest first: the candidate overlap test stops earliest this way.
+    front_parts::gather_v<D>(grid_, container_, opt_, s0, c0, r0, r, nb_, walls_, res.counters);
     // Overlap tests scan V nearest to s0 first.
     nb_c_.clear();
     nb_r_.clear();

@@ -1,14 +1,17 @@
 #pragma once
 // Pieces both advancing fronts (spheres: advancing_front.hpp; any shape: shape_front.cpp) use:
-// the front's heap entry, neighbour ordering, random directions and the lattice of void probes.
+// the front's heap entry, the neighbourhood V and its order, random directions and the lattice of
+// void probes.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
+#include "core/geometry/container.hpp"
 #include "core/geometry/vec.hpp"
 #include "core/io/scene.hpp"
 #include "core/sampling/rng.hpp"
+#include "front/pack_result.hpp"
 
 namespace fp::front_parts {
 
@@ -32,6 +35,25 @@ inline void order_neighbours(std::vector<Neighbour>& nb, PairOrder order) {
     std::sort(nb.begin(), nb.end(), [](const Neighbour& a, const Neighbour& b) { return a.gap < b.gap || (a.gap == b.gap && a.id < b.id); });
   else
     std::sort(nb.begin(), nb.end(), [](const Neighbour& a, const Neighbour& b) { return a.id < b.id; });
+}
+
+/// V of Pseudocode 1 for a front particle (c0, circumscribed radius r0) and a mobile of radius R:
+/// the particles whose spheres come within 2R of s0's (gap between the spheres, ordered by
+/// `opt.pair_order`), and, with walls as bodies, the walls within r0 + 2R of c0.
+template <int D, class Grid>
+void gather_v(const Grid& grid, const Container<D>& container, const PackerOptions& opt, int s0, const Vec<D>& c0,
+              double r0, double R, std::vector<Neighbour>& nb, std::vector<Wall<D>>& walls, FrontCounters& counters) {
+  nb.clear();
+  grid.for_each_within(c0, r0 + 2 * R, [&](int id, const Vec<D>&, double rk, double d2) {
+    if (id != s0) nb.push_back({std::sqrt(d2) - r0 - rk, id});
+  });
+  order_neighbours(nb, opt.pair_order);
+  counters.max_neighbours = std::max<std::uint64_t>(counters.max_neighbours, nb.size());
+  walls.clear();
+  if (opt.walls_as_bodies) {
+    container.walls_near(c0, r0 + 2 * R, walls);
+    counters.wall_bodies += walls.size();
+  }
 }
 
 /// A uniformly distributed unit vector (2 draws in 3D, 1 in 2D).

@@ -303,17 +303,7 @@ class ShapeFront {
     const Particle<D>& p0 = res.packing.particles[static_cast<std::size_t>(s0)];
     const Vec<D> c0 = p0.pose.position;
     const double r0 = p0.bounding_radius();
-    nb_.clear();
-    grid_.for_each_within(c0, r0 + 2 * R, [&](int id, const Vec<D>&, double rk, double d2) {
-      if (id != s0) nb_.push_back({std::sqrt(d2) - r0 - rk, id});
-    });
-    front_parts::order_neighbours(nb_, opt_.pair_order);
-    res.counters.max_neighbours = std::max<std::uint64_t>(res.counters.max_neighbours, nb_.size());
-    walls_.clear();
-    if (opt_.walls_as_bodies) {
-      container_.walls_near(c0, r0 + 2 * R, walls_);
-      res.counters.wall_bodies += walls_.size();
-    }
+    front_parts::gather_v<D>(grid_, container_, opt_, s0, c0, r0, R, nb_, walls_, res.counters);
     // Contact bodies: only those whose true gap to s0 a mobile of diameter 2R can bridge (the
     // circumscribed-sphere test above is loose for elongated shapes).
     // A fine mesh offers many nearly coplanar facets near s0: each would add its own pairs and
