@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/io/atomic_file.hpp"
+#include "core/io/lammps_box.hpp"
 #include "core/io/text_buffer.hpp"
 
 namespace fp {
@@ -46,38 +47,11 @@ void write_csv(std::ostream& out, const Packing<D>& p) {
 
 template <int D>
 void write_lammps(std::ostream& out, const Packing<D>& p, const RunRecord& rec) {
-  // Box: the container bounds, grown if needed so that every centre is inside (LAMMPS drops
-  // atoms outside the box); without bounds, the particles' bounding box grown by their radii.
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
-  Vec3 hi = -lo;
-  double r_max = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double r = p.radii[i];
-    r_max = std::max(r_max, r);
-    for (int k = 0; k < D; ++k) {
-      const double c = p.centers[i][k];
-      lo[k] = std::min(lo[k], rec.bounds ? c : c - r);
-      hi[k] = std::max(hi[k], rec.bounds ? c : c + r);
-    }
-  }
-  if (rec.bounds) {
-    lo = lo.cwiseMin(rec.bounds->lo);
-    hi = hi.cwiseMax(rec.bounds->hi);
-  }
-  for (int k = 0; k < 3; ++k) {
-    if (!(lo[k] < hi[k])) {  // empty packing or a flat axis: LAMMPS needs lo < hi
-      const double mid = std::isfinite(lo[k]) && std::isfinite(hi[k]) ? 0.5 * (lo[k] + hi[k]) : 0.0;
-      const double half = r_max > 0 ? r_max : 0.5;
-      lo[k] = mid - half;
-      hi[k] = mid + half;
-    }
-  }
-  if constexpr (D == 2) {
-    // LAMMPS 2D wants the atoms at z = 0 strictly inside a thin z slab.
-    const double half = r_max > 0 ? r_max : 0.5;
-    lo[2] = -half;
-    hi[2] = half;
-  }
+  LammpsBox<D> box_of(rec);
+  for (std::size_t i = 0; i < p.size(); ++i) box_of.add_atom(p.centers[i], p.radii[i]);
+  const Aabb<3> box = box_of.finish();
+  const Vec3& lo = box.lo;
+  const Vec3& hi = box.hi;
 
   TextBuffer b(out);
   b.text("LAMMPS data file (atom_style sphere) written by frontpack ").text(rec.version).text(", ");

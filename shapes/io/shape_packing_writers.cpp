@@ -17,6 +17,7 @@
 #include <string_view>
 
 #include "core/io/atomic_file.hpp"
+#include "core/io/lammps_box.hpp"
 #include "core/io/text_buffer.hpp"
 #include "shapes/spherocylinder_shape.hpp"
 
@@ -560,43 +561,19 @@ void write_yade(std::ostream& out, const ShapePacking<D>& p, const RunRecord& re
 template <int D>
 void write_lammps(std::ostream& data, std::ostream& clumps, const std::string& path, const ShapePacking<D>& p,
                   const RunRecord& rec) {
-  // Box: the container bounds, grown if needed so that every ball centre is inside (LAMMPS
-  // drops atoms outside the box); without bounds, the balls' bounding box grown by their radii.
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
-  Vec3 hi = -lo;
-  double r_max = 0.0;
+  LammpsBox<D> box_of(rec);
   std::int64_t n_balls = 0;
   int max_id = -1;
   for (const auto& q : p.particles) {
     max_id = std::max(max_id, q.template_id);
     for (const auto& ball : q.shape->hull_balls()) {
       ++n_balls;
-      const Vec<D> c = q.pose.to_world(ball.center);
-      const double r = ball.radius;
-      r_max = std::max(r_max, r);
-      for (int k = 0; k < D; ++k) {
-        lo[k] = std::min(lo[k], rec.bounds ? c[k] : c[k] - r);
-        hi[k] = std::max(hi[k], rec.bounds ? c[k] : c[k] + r);
-      }
+      box_of.add_atom(q.pose.to_world(ball.center), ball.radius);
     }
   }
-  if (rec.bounds) {
-    lo = lo.cwiseMin(rec.bounds->lo);
-    hi = hi.cwiseMax(rec.bounds->hi);
-  }
-  for (int k = 0; k < 3; ++k) {
-    if (!(lo[k] < hi[k])) {  // empty packing or a flat axis: LAMMPS needs lo < hi
-      const double mid = std::isfinite(lo[k]) && std::isfinite(hi[k]) ? 0.5 * (lo[k] + hi[k]) : 0.0;
-      const double half = r_max > 0 ? r_max : 0.5;
-      lo[k] = mid - half;
-      hi[k] = mid + half;
-    }
-  }
-  if constexpr (D == 2) {
-    const double half = r_max > 0 ? r_max : 0.5;  // LAMMPS 2D: atoms at z = 0 inside a thin slab
-    lo[2] = -half;
-    hi[2] = half;
-  }
+  const Aabb<3> box = box_of.finish();
+  const Vec3& lo = box.lo;
+  const Vec3& hi = box.hi;
   const std::size_t n_types = std::max<std::size_t>(1, template_count(p.template_names, max_id));
   const std::string companion = file_name(multisphere_path(path));
 
