@@ -45,6 +45,7 @@ struct MinimisationSolver<D>::Impl {
   const NarrowPhase<D>* np = nullptr;
   std::span<const Body<D>> fixed;
   std::array<Particle<D>, D> fixed_spheres;  // plain sphere bodies seen as particles
+  std::vector<double> y;                      // NLopt's variables, kept between runs (no allocation per run)
   Particle<D> mobile;
   Vec<D> origin, plane_point, plane_normal;
   double scale = 1, side = 0;  // side: +1/-1 = keep n.(x - plane_point) of that sign; 0 = free
@@ -139,7 +140,12 @@ int MinimisationSolver<D>::solve(std::span<const Body<D>> fixed, const Mobile<D>
   for (int i = 0; i < D; ++i)
     if (!fixed[i].is_wall() && !fixed[i].shaped) {
       auto& p = s.fixed_spheres[static_cast<std::size_t>(i)];
-      p.shape = std::make_shared<SphereShape<D>>(fixed[i].radius);
+      // Reused while the radius is the same; a replaced one is dropped from the narrow phase's
+      // FCL cache, which keeps every shape it has seen alive.
+      if (!p.shape || p.shape->bounding_radius() != fixed[i].radius) {
+        if (p.shape) np_.forget(p.shape.get());
+        p.shape = std::make_shared<SphereShape<D>>(fixed[i].radius);
+      }
       p.pose.position = fixed[i].center;
     }
   s.mobile.shape = mobile.shape;
@@ -256,7 +262,8 @@ int MinimisationSolver<D>::solve(std::span<const Body<D>> fixed, const Mobile<D>
     if (!done) {
       s.origin = x0;
       s.side = has_plane ? (s.plane_normal.dot(x0 - s.plane_point) >= 0 ? 1.0 : -1.0) : 0.0;
-      std::vector<double> y(D, 0.0);
+      std::vector<double>& y = s.y;
+      y.assign(D, 0.0);
       double f = 0;
       ++stats_.minimisations;
       s.opt.set_min_objective(&Impl::objective, &s);

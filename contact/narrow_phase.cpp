@@ -297,6 +297,16 @@ template <int D>
 NarrowPhase<D>::~NarrowPhase() = default;
 
 template <int D>
+void NarrowPhase<D>::forget(const Shape<D>* s) const {
+  cache_.erase(s);
+}
+
+template <int D>
+void NarrowPhase<D>::clear_cache() const {
+  cache_.clear();
+}
+
+template <int D>
 void NarrowPhase<D>::add_pair(const std::string& kind_a, const std::string& kind_b, PairGap gap) {
   memo_.clear();
   pairs_[{kind_a, kind_b}] = gap;

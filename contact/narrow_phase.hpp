@@ -56,8 +56,8 @@ class NarrowPhase {
   /// FCL distance queries made so far (the analytic paths do not count).
   std::uint64_t fcl_queries() const { return fcl_queries_; }
   /// Forgets the FCL geometry of one shape (a mobile draft that was not placed) or of all.
-  void forget(const Shape<D>* s) const { cache_.erase(s); }
-  void clear_cache() const { cache_.clear(); }
+  void forget(const Shape<D>* s) const;
+  void clear_cache() const;
 
  private:
   struct FclShape;
