@@ -17,8 +17,14 @@ PackingInput read_packing_input(const std::string& packing_path, const std::stri
   if (in.scene && in.dimension != in.scene->dimension)
     throw std::runtime_error(packing_path + " holds a " + std::to_string(in.dimension) + "D packing but " + scene_path +
                              " is a " + std::to_string(in.scene->dimension) + "D scene");
-  if (in.dimension == 2) in.packing2 = read_packing<2>(f, packing_path);
-  else in.packing3 = read_packing<3>(f, packing_path);
+  // Read in the container's frame (exact: the packer's own doubles), or without a scene in the
+  // frame the particles' bounds give.
+  if (in.dimension == 2)
+    in.packing2 = in.scene ? read_packing<2>(f, packing_path, in.scene->container<2>()->origin())
+                           : read_packing_in_own_frame<2>(f, packing_path);
+  else
+    in.packing3 = in.scene ? read_packing<3>(f, packing_path, in.scene->container<3>()->origin())
+                           : read_packing_in_own_frame<3>(f, packing_path);
   return in;
 }
 

@@ -34,6 +34,8 @@ RunRecord start_run_record(const Scene& scene, const Container<D>& container, st
   b3.lo.template head<D>() = b.lo;
   b3.hi.template head<D>() = b.hi;
   rec.bounds = b3;
+  rec.origin.setZero();
+  rec.origin.template head<D>() = container.origin();
   return rec;
 }
 

@@ -49,11 +49,7 @@ class AdvancingFront {
         grid_(grid_domain(container, radii), radii.r_min(), radii.r_max(), options.grid_cell_factor,
               options.hierarchical_grid_ratio) {
     if (opt_.radius_pool < 1) throw std::invalid_argument("radius_pool must be >= 1");
-    seed_point_ = container.interior_point();
-    if (opt_.seed_point) {
-      if (static_cast<int>(opt_.seed_point->size()) != D) throw std::invalid_argument("seed_point has the wrong dimension");
-      for (int a = 0; a < D; ++a) seed_point_[a] = (*opt_.seed_point)[a];
-    }
+    seed_point_ = front_parts::local_seed_point<D>(container, opt_);
     tol_ = opt_.contact_tolerance;
     measure_ = container_.measure();
     probe_smallest_ = opt_.probe_smallest.value_or(radii.r_max() <= kProbeRatioLimit * radii.r_min());
@@ -64,6 +60,7 @@ class AdvancingFront {
     const auto t0 = clock::now();
     PackResult<D> res;
     Packing<D>& P = res.packing;
+    P.origin = container_.origin();
     if (stop_.max_particles) P.reserve(*stop_.max_particles);
     const double measure = measure_;
     auto elapsed = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };

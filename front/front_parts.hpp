@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "core/geometry/container.hpp"
@@ -54,6 +55,17 @@ void gather_v(const Grid& grid, const Container<D>& container, const PackerOptio
     container.walls_near(c0, r0 + 2 * R, walls);
     counters.wall_bodies += walls.size();
   }
+}
+
+/// Where growth starts, in the container's local frame: the scene's seed_point (absolute) or
+/// the container's interior point.
+template <int D>
+Vec<D> local_seed_point(const Container<D>& container, const PackerOptions& opt) {
+  if (!opt.seed_point) return container.interior_point();
+  if (static_cast<int>(opt.seed_point->size()) != D) throw std::invalid_argument("seed_point has the wrong dimension");
+  Vec<D> s;
+  for (int a = 0; a < D; ++a) s[a] = (*opt.seed_point)[a];
+  return s - container.origin();
 }
 
 /// A uniformly distributed unit vector (2 draws in 3D, 1 in 2D).

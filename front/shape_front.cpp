@@ -30,11 +30,7 @@ class ShapeFront {
         grid_(grid_domain(container, r_max_), r_min_, r_max_, options.grid_cell_factor, options.hierarchical_grid_ratio) {
     if (templates_.empty()) throw std::invalid_argument("pack_shapes: no particle templates");
     if (opt_.radius_pool < 1) throw std::invalid_argument("radius_pool must be >= 1");
-    seed_point_ = container.interior_point();
-    if (opt_.seed_point) {
-      if (static_cast<int>(opt_.seed_point->size()) != D) throw std::invalid_argument("seed_point has the wrong dimension");
-      for (int a = 0; a < D; ++a) seed_point_[a] = (*opt_.seed_point)[a];
-    }
+    seed_point_ = front_parts::local_seed_point<D>(container, opt_);
     tol_ = opt_.minimisation.gap_tolerance;
     measure_ = container.measure();
   }
@@ -46,6 +42,7 @@ class ShapeFront {
     ShapePackResult<D> res;
     res.gap_tolerance = tol_;
     for (const auto& t : templates_) res.packing.template_names.push_back(t.family);
+    res.packing.origin = container_.origin();
     for (int k = 0; k < opt_.radius_pool; ++k) pool_.push_back(draw(res));
     initialise(res);
 

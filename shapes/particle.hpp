@@ -27,6 +27,9 @@ template <int D>
 struct ShapePacking {
   std::vector<Particle<D>> particles;
   std::vector<std::string> template_names;  ///< per template id: its family (and label)
+  /// Positions are in the container's local frame (core/geometry/local_frame.hpp): absolute =
+  /// origin + pose.position.
+  Vec<D> origin = Vec<D>::Zero();
 
   std::size_t size() const { return particles.size(); }
   bool empty() const { return particles.empty(); }

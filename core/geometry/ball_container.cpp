@@ -7,7 +7,9 @@
 namespace fp {
 
 template <int D>
-BallContainer<D>::BallContainer(const Vec<D>& center, double radius) : center_(center), radius_(radius) {
+BallContainer<D>::BallContainer(const Vec<D>& center, double radius, const Vec<D>& origin)
+    : Container<D>(origin), center_(center - origin), radius_(radius) {
+  detail::require_finite<D>(origin, "BallContainer", "origin");
   detail::require_finite<D>(center, "BallContainer", "center");
   detail::require_positive(radius, "BallContainer", "radius");
 }
@@ -42,7 +44,7 @@ void BallContainer<D>::walls_near(const Vec<D>& p, double reach, std::vector<Wal
 
 template <int D>
 std::string BallContainer<D>::describe() const {
-  return std::string(D == 2 ? "disk" : "ball") + " center " + detail::format_vec<D>(center_) + " radius " +
+  return std::string(D == 2 ? "disk" : "ball") + " center " + detail::format_vec<D>(center_ + this->origin()) + " radius " +
          detail::format_number(radius_);
 }
 

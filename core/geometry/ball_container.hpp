@@ -7,8 +7,9 @@ namespace fp {
 template <int D>
 class BallContainer final : public Container<D> {
  public:
+  /// `center` is absolute; the ball is stored relative to `origin` (its local frame).
   /// Throws std::invalid_argument unless center is finite and radius positive and finite.
-  BallContainer(const Vec<D>& center, double radius);
+  BallContainer(const Vec<D>& center, double radius, const Vec<D>& origin = Vec<D>::Zero());
 
   bool inside(const Vec<D>& p) const override;
   double signed_distance(const Vec<D>& p) const override;
@@ -20,6 +21,7 @@ class BallContainer final : public Container<D> {
   std::string describe() const override;
   bool contains_ball(const Vec<D>& c, double r, double rel_tol = 1e-9) const override;
 
+  /// In the local frame.
   const Vec<D>& center() const { return center_; }
   double radius() const { return radius_; }
 

@@ -9,9 +9,11 @@
 namespace fp {
 
 template <int D>
-BoxContainer<D>::BoxContainer(const Vec<D>& lo, const Vec<D>& hi) : lo_(lo), hi_(hi) {
+BoxContainer<D>::BoxContainer(const Vec<D>& lo, const Vec<D>& hi, const Vec<D>& origin)
+    : Container<D>(origin), lo_(lo - origin), hi_(hi - origin) {
   detail::require_finite<D>(lo, "BoxContainer", "lo");
   detail::require_finite<D>(hi, "BoxContainer", "hi");
+  detail::require_finite<D>(origin, "BoxContainer", "origin");
   for (int a = 0; a < D; ++a)
     if (!(lo[a] < hi[a]))
       throw std::invalid_argument("BoxContainer: lo must be < hi on every axis (size must be positive), got lo " +
@@ -72,7 +74,8 @@ Vec<D> BoxContainer<D>::interior_point() const {
 
 template <int D>
 std::string BoxContainer<D>::describe() const {
-  return std::string(D == 2 ? "rectangle " : "box ") + detail::format_vec<D>(lo_) + "-" + detail::format_vec<D>(hi_);
+  return std::string(D == 2 ? "rectangle " : "box ") + detail::format_vec<D>(lo_ + this->origin()) + "-" +
+         detail::format_vec<D>(hi_ + this->origin());
 }
 
 template <int D>

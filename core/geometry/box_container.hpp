@@ -7,8 +7,17 @@ namespace fp {
 template <int D>
 class BoxContainer final : public Container<D> {
  public:
+  /// lo and hi are absolute; the box is stored relative to `origin` (its local frame).
   /// Throws std::invalid_argument unless lo and hi are finite and lo < hi on every axis.
-  BoxContainer(const Vec<D>& lo, const Vec<D>& hi);
+  BoxContainer(const Vec<D>& lo, const Vec<D>& hi, const Vec<D>& origin = Vec<D>::Zero());
+
+  /// A box given in the local frame of `origin` (exactly: no round trip through absolute values).
+  static BoxContainer from_local(const Vec<D>& lo, const Vec<D>& hi, const Vec<D>& origin) {
+    BoxContainer b(lo + origin, hi + origin, origin);
+    b.lo_ = lo;
+    b.hi_ = hi;
+    return b;
+  }
 
   bool inside(const Vec<D>& p) const override;
   double signed_distance(const Vec<D>& p) const override;
@@ -21,6 +30,7 @@ class BoxContainer final : public Container<D> {
   std::string describe() const override;
   bool contains_ball(const Vec<D>& c, double r, double rel_tol = 1e-9) const override;
 
+  /// Corners in the local frame.
   const Vec<D>& lo() const { return lo_; }
   const Vec<D>& hi() const { return hi_; }
 

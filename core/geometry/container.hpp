@@ -9,10 +9,16 @@
 
 namespace fp {
 
+/// Every position a container takes or returns is in its local frame: relative to origin()
+/// (core/geometry/local_frame.hpp), so that far-off scenes keep their digits. Absolute =
+/// origin() + local; only scene input and packing files see absolute coordinates.
 template <int D>
 class Container {
  public:
   virtual ~Container() = default;
+
+  /// The absolute position of the local frame's origin (zero for a container near the origin).
+  const Vec<D>& origin() const { return origin_; }
 
   /// True if p is in the closed container.
   virtual bool inside(const Vec<D>& p) const = 0;
@@ -25,7 +31,7 @@ class Container {
   virtual void walls_near(const Vec<D>& p, double reach, std::vector<Wall<D>>& out) const = 0;
   /// A point deep inside, where packing starts (the centre for convex containers).
   virtual Vec<D> interior_point() const = 0;
-  /// One-line human description, e.g. "box [0,0.9]^3".
+  /// One-line human description in absolute coordinates, e.g. "box [0,0,0]-[0.9,0.9,0.9]".
   virtual std::string describe() const = 0;
 
   /// True if the ball (c, r) lies inside, allowing a contact tolerance of rel_tol*r
@@ -33,6 +39,12 @@ class Container {
   virtual bool contains_ball(const Vec<D>& c, double r, double rel_tol = 1e-9) const {
     return signed_distance(c) <= -r + rel_tol * r;
   }
+
+ protected:
+  explicit Container(const Vec<D>& origin = Vec<D>::Zero()) : origin_(origin) {}
+
+ private:
+  Vec<D> origin_;
 };
 
 template <int D>

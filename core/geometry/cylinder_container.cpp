@@ -8,8 +8,10 @@
 
 namespace fp {
 
-CylinderContainer::CylinderContainer(const Vec3& base_center, const Vec3& axis, double radius, double height)
-    : base_(base_center), radius_(radius), height_(height) {
+CylinderContainer::CylinderContainer(const Vec3& base_center, const Vec3& axis, double radius, double height,
+                                     const Vec3& origin)
+    : Container<3>(origin), base_(base_center - origin), radius_(radius), height_(height) {
+  detail::require_finite<3>(origin, "CylinderContainer", "origin");
   detail::require_finite<3>(base_center, "CylinderContainer", "base_center");
   detail::require_finite<3>(axis, "CylinderContainer", "axis");
   detail::require_positive(radius, "CylinderContainer", "radius");
@@ -61,7 +63,7 @@ void CylinderContainer::walls_near(const Vec3& p, double reach, std::vector<Wall
 }
 
 std::string CylinderContainer::describe() const {
-  return "cylinder base " + detail::format_vec<3>(base_) + " axis " + detail::format_vec<3>(axis_) + " radius " +
+  return "cylinder base " + detail::format_vec<3>(base_ + origin()) + " axis " + detail::format_vec<3>(axis_) + " radius " +
          detail::format_number(radius_) + " height " + detail::format_number(height_);
 }
 

@@ -9,7 +9,9 @@ class CylinderContainer final : public Container<3> {
   /// The solid {base_center + t * axis + q : 0 <= t <= height, q _|_ axis, |q| <= radius}.
   /// `axis` need not be unit (it is normalised here) but must be non-zero; throws
   /// std::invalid_argument on a zero axis, non-positive radius/height or non-finite input.
-  CylinderContainer(const Vec3& base_center, const Vec3& axis, double radius, double height);
+  /// `base_center` is absolute; the cylinder is stored relative to `origin` (its local frame).
+  CylinderContainer(const Vec3& base_center, const Vec3& axis, double radius, double height,
+                    const Vec3& origin = Vec3::Zero());
 
   bool inside(const Vec3& p) const override;
   double signed_distance(const Vec3& p) const override;
@@ -23,6 +25,7 @@ class CylinderContainer final : public Container<3> {
   std::string describe() const override;
   bool contains_ball(const Vec3& c, double r, double rel_tol = 1e-9) const override;
 
+  /// In the local frame.
   const Vec3& base_center() const { return base_; }
   const Vec3& axis() const { return axis_; }
   double radius() const { return radius_; }

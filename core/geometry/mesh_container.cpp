@@ -184,7 +184,7 @@ std::vector<int> orient_consistently(const std::string& name, std::vector<std::a
 
 }  // namespace
 
-std::shared_ptr<MeshContainer> MeshContainer::from_file(const std::string& path, double scale) {
+std::shared_ptr<MeshContainer> MeshContainer::from_file(const std::string& path, double scale, FrameChoice frame) {
   const std::string name = base_name(path);
   if (!(scale > 0.0) || !std::isfinite(scale))
     throw std::invalid_argument("MeshContainer: scale must be positive and finite, got " + detail::format_number(scale) +
@@ -203,22 +203,30 @@ std::shared_ptr<MeshContainer> MeshContainer::from_file(const std::string& path,
     for (std::size_t k = 1; k + 1 < poly.size(); ++k)
       triangles.push_back({static_cast<int>(poly[0]), static_cast<int>(poly[k]), static_cast<int>(poly[k + 1])});
   }
-  for (Vec3& p : soup.points) p *= scale;
-  return std::shared_ptr<MeshContainer>(new MeshContainer(std::move(soup.points), std::move(triangles), name));
+  Aabb<3> box;
+  for (Vec3& p : soup.points) {
+    p *= scale;
+    if (p.allFinite()) box.extend(p);
+  }
+  const Vec3 origin = frame == FrameChoice::Local && !soup.points.empty() ? frame_origin<3>(box) : Vec3::Zero();
+  return std::shared_ptr<MeshContainer>(new MeshContainer(std::move(soup.points), std::move(triangles), name, origin));
 }
 
 std::shared_ptr<MeshContainer> MeshContainer::from_triangles(std::vector<Vec3> vertices,
                                                              std::vector<std::array<int, 3>> triangles,
-                                                             const std::string& name) {
-  return std::shared_ptr<MeshContainer>(new MeshContainer(std::move(vertices), std::move(triangles), name));
+                                                             const std::string& name, const Vec3& origin) {
+  return std::shared_ptr<MeshContainer>(new MeshContainer(std::move(vertices), std::move(triangles), name, origin));
 }
 
-MeshContainer::MeshContainer(std::vector<Vec3> vertices, std::vector<std::array<int, 3>> triangles, std::string name)
-    : name_(std::move(name)), vertices_(std::move(vertices)), triangles_(std::move(triangles)) {
+MeshContainer::MeshContainer(std::vector<Vec3> vertices, std::vector<std::array<int, 3>> triangles, std::string name,
+                             const Vec3& origin)
+    : Container<3>(origin), name_(std::move(name)), vertices_(std::move(vertices)), triangles_(std::move(triangles)) {
+  detail::require_finite<3>(origin, "MeshContainer", "origin");
   const int nv = static_cast<int>(vertices_.size());
   for (int i = 0; i < nv; ++i)
     if (!vertices_[i].allFinite())
       refuse(name_, "has a non-finite vertex " + std::to_string(i) + ": " + detail::format_vec<3>(vertices_[i]));
+  for (Vec3& v : vertices_) v -= origin;  // exact for every vertex near the origin's magnitude (local_frame.hpp)
   for (std::size_t f = 0; f < triangles_.size(); ++f)
     for (int i : triangles_[f])
       if (i < 0 || i >= nv) refuse(name_, "has a vertex index out of range in facet " + std::to_string(f));

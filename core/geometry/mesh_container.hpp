@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/geometry/container.hpp"
+#include "core/geometry/local_frame.hpp"
 
 namespace fp {
 
@@ -22,11 +23,16 @@ class MeshContainer final : public Container<3> {
   /// Throws std::invalid_argument, naming the file, if it cannot be read or the surface is empty,
   /// open ("mesh 'x.off' is not closed: 12 boundary edges"), non-manifold (edges shared by more
   /// than 2 facets), not orientable, or encloses no volume.
-  static std::shared_ptr<MeshContainer> from_file(const std::string& path, double scale = 1.0);
-  /// Same checks for a surface given in code; `name` is used in messages and describe().
+  /// With FrameChoice::Local the mesh is stored in its own local frame (frame_origin of its
+  /// bounds), as a scene does; with Absolute, origin 0.
+  static std::shared_ptr<MeshContainer> from_file(const std::string& path, double scale = 1.0,
+                                                  FrameChoice frame = FrameChoice::Absolute);
+  /// Same checks for a surface given in code (absolute vertices, stored relative to `origin`);
+  /// `name` is used in messages and describe().
   static std::shared_ptr<MeshContainer> from_triangles(std::vector<Vec3> vertices,
                                                        std::vector<std::array<int, 3>> triangles,
-                                                       const std::string& name = "triangles");
+                                                       const std::string& name = "triangles",
+                                                       const Vec3& origin = Vec3::Zero());
   ~MeshContainer() override;
 
   /// Closed: points on the surface are inside.
@@ -47,14 +53,15 @@ class MeshContainer final : public Container<3> {
   bool contains_ball(const Vec3& c, double r, double rel_tol = 1e-9) const override;
 
   std::size_t num_facets() const { return triangles_.size(); }
-  /// Vertices (duplicates merged, scaled) and facets oriented with outward normals.
+  /// Vertices (duplicates merged, scaled, in the local frame) and facets oriented with outward normals.
   const std::vector<Vec3>& vertices() const { return vertices_; }
   const std::vector<std::array<int, 3>>& triangles() const { return triangles_; }
   /// Facets dropped at load because two of their corners were the same vertex.
   int dropped_degenerate_facets() const { return dropped_degenerate_; }
 
  private:
-  MeshContainer(std::vector<Vec3> vertices, std::vector<std::array<int, 3>> triangles, std::string name);
+  MeshContainer(std::vector<Vec3> vertices, std::vector<std::array<int, 3>> triangles, std::string name,
+                const Vec3& origin);
 
   std::string name_;
   std::vector<Vec3> vertices_;

@@ -71,14 +71,17 @@ void check_simple(const std::vector<Vec2>& v) {
 
 }  // namespace
 
-PolygonContainer::PolygonContainer(std::vector<Vec2> vertices) : v_(std::move(vertices)) {
+PolygonContainer::PolygonContainer(std::vector<Vec2> vertices, const Vec2& origin)
+    : Container<2>(origin), v_(std::move(vertices)) {
+  detail::require_finite<2>(origin, "PolygonContainer", "origin");
+  for (Vec2& p : v_) p -= origin;
   const int n = static_cast<int>(v_.size());
   if (n < 3)
     throw std::invalid_argument("PolygonContainer: vertices: need at least 3, got " + std::to_string(n));
   for (int i = 0; i < n; ++i) {
     if (!v_[i].allFinite())
       throw std::invalid_argument("PolygonContainer: vertices: vertex " + std::to_string(i) + " is not finite: " +
-                                  detail::format_vec<2>(v_[i]));
+                                  detail::format_vec<2>(Vec2(v_[i] + origin)));
     box_.extend(v_[i]);
   }
   {
@@ -92,7 +95,7 @@ PolygonContainer::PolygonContainer(std::vector<Vec2> vertices) : v_(std::move(ve
       if (v_[order[k]] == v_[order[k - 1]])
         throw std::invalid_argument("PolygonContainer: vertices: vertices " + std::to_string(order[k - 1]) + " and " +
                                     std::to_string(order[k]) + " are the same point " +
-                                    detail::format_vec<2>(v_[order[k]]));
+                                    detail::format_vec<2>(Vec2(v_[order[k]] + origin)));
   }
   double twice_area = 0.0;
   const Vec2 o = box_.center();  // shoelace about the centre: less cancellation far from the origin

@@ -12,7 +12,8 @@ class PolygonContainer final : public Container<2> {
   /// `vertices` in either orientation (stored counter-clockwise). Throws std::invalid_argument
   /// for fewer than 3 vertices, non-finite or repeated points, zero area, or a self-intersecting
   /// boundary (including an edge that doubles back on its neighbour).
-  explicit PolygonContainer(std::vector<Vec2> vertices);
+  /// `vertices` are absolute; the polygon is stored relative to `origin` (its local frame).
+  explicit PolygonContainer(std::vector<Vec2> vertices, const Vec2& origin = Vec2::Zero());
 
   /// Closed: points on the boundary are inside.
   bool inside(const Vec2& p) const override;
@@ -28,7 +29,7 @@ class PolygonContainer final : public Container<2> {
   Vec2 interior_point() const override { return interior_; }
   std::string describe() const override;
 
-  /// Counter-clockwise vertices.
+  /// Counter-clockwise vertices, in the local frame.
   const std::vector<Vec2>& vertices() const { return v_; }
   /// True if the interior angle at vertex i exceeds 180 degrees.
   bool is_reflex(int i) const { return reflex_[i] != 0; }

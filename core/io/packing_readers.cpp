@@ -13,6 +13,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/geometry/local_frame.hpp"
+#include "core/io/exact_decimal.hpp"
 #include "core/io/run_record.hpp"
 
 namespace fp {
@@ -96,6 +98,15 @@ double number_or_fail(const Lines& lines, std::string_view field, const char* wh
   return *v;
 }
 
+/// A coordinate in the reader's frame: the text minus the axis origin, subtracted exactly.
+double coordinate_or_fail(const Lines& lines, std::string_view field, const OffsetAxis& axis, const char* what) {
+  if (axis.zero()) return number_or_fail(lines, field, what);
+  if (!field.empty() && field.front() == '+') field.remove_prefix(1);
+  const auto v = axis.local_from_text(field);
+  if (!v) lines.fail(std::string("expected a number for ") + what + ", got '" + std::string(field) + "'");
+  return *v;
+}
+
 // Places particles by id (ids first..first+n-1, any order) and checks ids are a permutation.
 template <int D>
 class ById {
@@ -104,7 +115,7 @@ class ById {
   void add(const Lines& lines, std::int64_t id, const Vec<D>& c, double r) {
     rows_.push_back({id, c, r, lines.number()});
   }
-  Packing<D> finish(const std::string& path) {
+  Packing<D> finish(const std::string& path, const Vec<D>& origin) {
     const std::int64_t n = static_cast<std::int64_t>(rows_.size());
     std::vector<int> slot(rows_.size(), -1);
     for (std::size_t k = 0; k < rows_.size(); ++k) {
@@ -121,6 +132,7 @@ class ById {
       slot[static_cast<std::size_t>(i)] = static_cast<int>(k);
     }
     Packing<D> p;
+    p.origin = origin;
     p.reserve(rows_.size());
     for (const int k : slot) p.add(rows_[static_cast<std::size_t>(k)].c, rows_[static_cast<std::size_t>(k)].r);
     return p;
@@ -148,26 +160,29 @@ Vec<D> center_from(const Lines& lines, const double xyz[3]) {
 }
 
 template <int D>
-Packing<D> read_yade(const std::string& path) {
+Packing<D> read_yade(const std::string& path, const Vec<D>& origin) {
   const std::string text = read_whole_file(path);
+  const auto axes = offset_axes(origin.data(), D);
   Lines lines(text, path);
   Packing<D> p;
+  p.origin = origin;
   std::string_view line;
   while (lines.next(line)) {
     line = trim(line);
     if (line.empty() || line.front() == '#') continue;
     const auto f = split(line, ' ');
     if (f.size() != 4) lines.fail("expected 4 columns 'x y z r', got " + std::to_string(f.size()));
-    const double xyz[3] = {number_or_fail(lines, f[0], "x"), number_or_fail(lines, f[1], "y"),
-                           number_or_fail(lines, f[2], "z")};
+    const double xyz[3] = {coordinate_or_fail(lines, f[0], axes[0], "x"), coordinate_or_fail(lines, f[1], axes[1], "y"),
+                           coordinate_or_fail(lines, f[2], axes[2], "z")};
     p.add(center_from<D>(lines, xyz), number_or_fail(lines, f[3], "r"));
   }
   return p;
 }
 
 template <int D>
-Packing<D> read_csv(const std::string& path) {
+Packing<D> read_csv(const std::string& path, const Vec<D>& origin) {
   const std::string text = read_whole_file(path);
+  const auto axes = offset_axes(origin.data(), D);
   Lines lines(text, path);
   std::string_view line;
   const std::string header = D == 3 ? "id,x,y,z,r" : "id,x,y,r";
@@ -185,10 +200,10 @@ Packing<D> read_csv(const std::string& path) {
     if (!id) lines.fail("expected an integer id, got '" + std::string(f[0]) + "'");
     Vec<D> c;
     const char* names[] = {"x", "y", "z"};
-    for (int k = 0; k < D; ++k) c[k] = number_or_fail(lines, f[static_cast<std::size_t>(k) + 1], names[k]);
+    for (int k = 0; k < D; ++k) c[k] = coordinate_or_fail(lines, f[static_cast<std::size_t>(k) + 1], axes[k], names[k]);
     rows.add(lines, *id, c, number_or_fail(lines, f[static_cast<std::size_t>(D) + 1], "r"));
   }
-  return rows.finish(path);
+  return rows.finish(path, origin);
 }
 
 std::string_view strip_comment(std::string_view s) {
@@ -197,8 +212,9 @@ std::string_view strip_comment(std::string_view s) {
 }
 
 template <int D>
-Packing<D> read_lammps(const std::string& path) {
+Packing<D> read_lammps(const std::string& path, const Vec<D>& origin) {
   const std::string text = read_whole_file(path);
+  const auto axes = offset_axes(origin.data(), D);
   Lines lines(text, path);
   std::string_view line;
   if (!lines.next(line)) lines.fail("empty file");  // first line: the title, always skipped
@@ -238,14 +254,14 @@ Packing<D> read_lammps(const std::string& path) {
     const auto id = parse_number<std::int64_t>(f[0]);
     if (!id) lines.fail("expected an integer atom id, got '" + std::string(f[0]) + "'");
     const double diameter = number_or_fail(lines, f[2], "the diameter");
-    const double xyz[3] = {number_or_fail(lines, f[4], "x"), number_or_fail(lines, f[5], "y"),
-                           number_or_fail(lines, f[6], "z")};
+    const double xyz[3] = {coordinate_or_fail(lines, f[4], axes[0], "x"), coordinate_or_fail(lines, f[5], axes[1], "y"),
+                           coordinate_or_fail(lines, f[6], axes[2], "z")};
     rows.add(lines, *id, center_from<D>(lines, xyz), 0.5 * diameter);
     ++read;
   }
   if (read < *n_atoms)
     lines.fail("the header announces " + std::to_string(*n_atoms) + " atoms, the Atoms section has " + std::to_string(read));
-  return rows.finish(path);
+  return rows.finish(path, origin);
 }
 
 // --- VTU: frontpack's own layout (appended raw, UInt64 headers, native byte order) -------
@@ -267,7 +283,7 @@ std::map<std::string, std::string> attributes(std::string_view tag) {
 }
 
 template <int D>
-Packing<D> read_vtu(const std::string& path) {
+Packing<D> read_vtu(const std::string& path, const Vec<D>& origin) {
   const std::string data = read_whole_file(path);
   auto fail = [&](const std::string& why) -> std::runtime_error {
     return std::runtime_error(path + ": " + why + " (only frontpack's own VTU layout, appended raw binary, can be read)");
@@ -317,13 +333,33 @@ Packing<D> read_vtu(const std::string& path) {
   };
   const char* radius = block("radius", "Float64", 1);
   const char* points = block("Points", "Float64", 3);
+  // A packing written in a local frame carries its exact centres (packing_writers.cpp):
+  // local_position relative to frame_origin, an ascii field of three numbers.
+  const char* local = nullptr;
+  double shift[3] = {0, 0, 0};  // file frame - reader frame
+  if (arrays.count("local_position")) {
+    local = block("local_position", "Float64", 3);
+    const std::size_t at = header.find("Name=\"frame_origin\"");
+    if (at == std::string::npos) throw fail("DataArray 'local_position' without the field 'frame_origin'");
+    const std::size_t open = header.find('>', at), close = header.find('<', open);
+    const auto values = split(trim(header.substr(open + 1, close - open - 1)), ' ');
+    if (values.size() != 3) throw fail("the field 'frame_origin' must hold 3 numbers");
+    for (int k = 0; k < 3; ++k) {
+      const auto v = parse_number<double>(values[static_cast<std::size_t>(k)]);
+      if (!v) throw fail("the field 'frame_origin' must hold 3 numbers");
+      shift[k] = *v - (k < D ? origin[k] : 0.0);
+    }
+  }
   Packing<D> p;
+  p.origin = origin;
   p.reserve(*n);
   for (std::uint64_t i = 0; i < *n; ++i) {
     double xyz[3];
     double r;
-    std::memcpy(xyz, points + 24 * i, 24);
+    std::memcpy(xyz, (local ? local : points) + 24 * i, 24);
     std::memcpy(&r, radius + 8 * i, 8);
+    for (int k = 0; k < 3; ++k)  // exact when the frames agree (shift 0)
+      xyz[k] = local ? (shift[k] == 0.0 ? xyz[k] : xyz[k] + shift[k]) : xyz[k] - (k < D ? origin[k] : 0.0);
     if constexpr (D == 2) {
       if (xyz[2] != 0.0) throw std::runtime_error(path + ": point " + std::to_string(i) + " has z != 0 in a 2D packing");
       p.add(Vec2(xyz[0], xyz[1]), r);
@@ -335,20 +371,20 @@ Packing<D> read_vtu(const std::string& path) {
 }
 
 template <int D>
-Packing<D> read_json(const std::string& path) {
-  return packing_from_json<D>(read_whole_file(path), path);
+Packing<D> read_json(const std::string& path, const Vec<D>& origin) {
+  return packing_from_json<D>(read_whole_file(path), path, origin);
 }
 
 }  // namespace
 
 template <int D>
-Packing<D> read_packing(OutputFormat format, const std::string& path) {
+Packing<D> read_packing(OutputFormat format, const std::string& path, const Vec<D>& origin) {
   switch (format) {
-    case OutputFormat::Vtu: return read_vtu<D>(path);
-    case OutputFormat::Yade: return read_yade<D>(path);
-    case OutputFormat::Lammps: return read_lammps<D>(path);
-    case OutputFormat::Csv: return read_csv<D>(path);
-    case OutputFormat::Json: return read_json<D>(path);
+    case OutputFormat::Vtu: return read_vtu<D>(path, origin);
+    case OutputFormat::Yade: return read_yade<D>(path, origin);
+    case OutputFormat::Lammps: return read_lammps<D>(path, origin);
+    case OutputFormat::Csv: return read_csv<D>(path, origin);
+    case OutputFormat::Json: return read_json<D>(path, origin);
   }
   throw std::invalid_argument("invalid OutputFormat value");
 }
@@ -365,13 +401,26 @@ int packing_file_dimension(OutputFormat format, const std::string& path) {
     if (f.size() == 4) return 2;
     lines.fail("expected the header 'id,x,y,z,r' (3D) or 'id,x,y,r' (2D)");
   }
-  const Packing<3> p = read_packing<3>(format, path);
+  const Packing<3> p = read_packing<3>(format, path, Vec3::Zero());
   for (const auto& c : p.centers)
     if (c.z() != 0.0) return 3;
   return p.empty() ? 3 : 2;
 }
 
-template Packing<2> read_packing<2>(OutputFormat, const std::string&);
-template Packing<3> read_packing<3>(OutputFormat, const std::string&);
+template <int D>
+Packing<D> read_packing_in_own_frame(OutputFormat format, const std::string& path) {
+  Packing<D> p = read_packing<D>(format, path, Vec<D>::Zero());
+  Aabb<D> box;
+  for (const auto& c : p.centers)
+    if (c.allFinite()) box.extend(c);
+  if (p.empty() || !(box.lo.array() <= box.hi.array()).all()) return p;
+  const Vec<D> origin = frame_origin<D>(box);
+  return origin.isZero() ? p : read_packing<D>(format, path, origin);
+}
+
+template Packing<2> read_packing<2>(OutputFormat, const std::string&, const Vec2&);
+template Packing<3> read_packing<3>(OutputFormat, const std::string&, const Vec3&);
+template Packing<2> read_packing_in_own_frame<2>(OutputFormat, const std::string&);
+template Packing<3> read_packing_in_own_frame<3>(OutputFormat, const std::string&);
 
 }  // namespace fp

@@ -10,10 +10,17 @@
 
 namespace fp {
 
-/// Reads a D-dimensional packing. A 2D read requires every z to be 0 (and the CSV header of
+/// Reads a D-dimensional packing into the frame of `origin` (the container's frame origin,
+/// core/geometry/local_frame.hpp): centres = absolute - origin, the subtraction done exactly on
+/// the file's text (core/io/exact_decimal.hpp), so a file read in the frame it was written in
+/// gives back the packer's doubles. A 2D read requires every z to be 0 (and the CSV header of
 /// the right dimension). Particles come back in id order.
 template <int D>
-Packing<D> read_packing(OutputFormat format, const std::string& path);
+Packing<D> read_packing(OutputFormat format, const std::string& path, const Vec<D>& origin = Vec<D>::Zero());
+
+/// Same, in the frame that frame_origin() gives the particles' centres (no container known).
+template <int D>
+Packing<D> read_packing_in_own_frame(OutputFormat format, const std::string& path);
 
 /// 2 or 3: from the CSV header or the JSON "dimension"; for the other formats 2 iff every
 /// z is exactly 0. Throws like read_packing.

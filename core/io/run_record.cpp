@@ -1,9 +1,11 @@
 #include "core/io/run_record.hpp"
 
 #include <nlohmann/json.hpp>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/io/atomic_file.hpp"
+#include "core/io/exact_decimal.hpp"
 
 namespace fp {
 namespace {
@@ -26,10 +28,12 @@ Json record_object(const RunRecord& r) {
   j["distribution"] = r.distribution_description;
   if (r.bounds) {
     const auto& b = *r.bounds;
-    j["bounds"] = Json{{"lo", {b.lo.x(), b.lo.y(), b.lo.z()}}, {"hi", {b.hi.x(), b.hi.y(), b.hi.z()}}};
+    const Vec3 lo = b.lo + r.origin, hi = b.hi + r.origin;
+    j["bounds"] = Json{{"lo", {lo.x(), lo.y(), lo.z()}}, {"hi", {hi.x(), hi.y(), hi.z()}}};
   } else {
     j["bounds"] = nullptr;
   }
+  j["frame_origin"] = {r.origin.x(), r.origin.y(), r.origin.z()};
   j["density"] = r.density;
   j["timings"] = Json::object();
   for (const auto& [k, v] : r.timings) j["timings"][k] = v;
@@ -56,10 +60,23 @@ std::string run_record_json(const RunRecord& record, const Packing<D>& packing) 
   const std::size_t n = packing.size();
   std::string particles = ",\n  \"particles\": {";
   const char* names[] = {"x", "y", "z"};
+  const auto axes = offset_axes(packing.origin.data(), D);
   std::vector<double> column(n);
   for (int k = 0; k < D; ++k) {
-    for (std::size_t i = 0; i < n; ++i) column[i] = packing.centers[i][k];
-    particles += std::string(k == 0 ? "" : ",") + "\n    \"" + names[k] + "\": " + Json(column).dump();
+    particles += std::string(k == 0 ? "" : ",") + "\n    \"" + names[k] + "\": ";
+    if (axes[k].zero()) {
+      for (std::size_t i = 0; i < n; ++i) column[i] = packing.centers[i][k];
+      particles += Json(column).dump();
+      continue;
+    }
+    particles += '[';
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i) particles += ',';
+      const double x = packing.centers[i][k];
+      if (std::isfinite(x)) axes[k].append_absolute(particles, x);
+      else particles += "null";
+    }
+    particles += ']';
   }
   particles += ",\n    \"r\": " + Json(packing.radii).dump() + "\n  }\n}\n";
   text.pop_back();  // the closing '}'
@@ -89,6 +106,57 @@ Json parse_record(const std::string& text, const std::string& source_name, int& 
   return j;
 }
 
+/// The text of every number of particles.x, .y and .z (a DOM keeps only the rounded doubles).
+class ParticleTokens : public nlohmann::json_sax<Json> {
+ public:
+  std::vector<std::string> axis[3];
+
+  bool null() override { return put("null"); }
+  bool boolean(bool) override { return put("?"); }
+  bool number_integer(number_integer_t v) override { return put(std::to_string(v)); }
+  bool number_unsigned(number_unsigned_t v) override { return put(std::to_string(v)); }
+  bool number_float(number_float_t, const string_t& s) override { return put(s); }
+  bool string(string_t&) override { return put("?"); }
+  bool binary(binary_t&) override { return put("?"); }
+  bool start_object(std::size_t) override {
+    keys_.push_back(pending_);
+    return true;
+  }
+  bool key(string_t& k) override {
+    pending_ = k;
+    return true;
+  }
+  bool end_object() override {
+    keys_.pop_back();
+    return true;
+  }
+  bool start_array(std::size_t) override {
+    // particles.{x,y,z}: the array directly under the "particles" object of the top level.
+    in_array_ = -1;
+    if (keys_.size() == 2 && keys_[1] == "particles" && arrays_open_ == 0)
+      for (int k = 0; k < 3; ++k)
+        if (pending_ == "xyz"[k] + std::string()) in_array_ = k;
+    ++arrays_open_;
+    return true;
+  }
+  bool end_array() override {
+    --arrays_open_;
+    in_array_ = -1;
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+
+ private:
+  bool put(const std::string& s) {
+    if (in_array_ >= 0 && arrays_open_ == 1) axis[in_array_].push_back(s);
+    return true;
+  }
+  std::vector<std::string> keys_;
+  std::string pending_;
+  int in_array_ = -1;
+  int arrays_open_ = 0;
+};
+
 }  // namespace
 
 int run_record_dimension(const std::string& text, const std::string& source_name) {
@@ -98,7 +166,7 @@ int run_record_dimension(const std::string& text, const std::string& source_name
 }
 
 template <int D>
-Packing<D> packing_from_json(const std::string& text, const std::string& source_name) {
+Packing<D> packing_from_json(const std::string& text, const std::string& source_name, const Vec<D>& origin) {
   int dimension = 0;
   Json j = parse_record(text, source_name, dimension);
   auto fail = [&](const std::string& why) -> std::runtime_error {
@@ -126,7 +194,23 @@ Packing<D> packing_from_json(const std::string& text, const std::string& source_
                  std::to_string(cols.front().size()));
     cols.push_back(std::move(col));
   }
+  // Far from the origin the doubles of the DOM lost digits: subtract the origin from the text.
+  if (!origin.isZero()) {
+    ParticleTokens tokens;
+    Json::sax_parse(text, &tokens);
+    for (int k = 0; k < D; ++k) {
+      if (origin[k] == 0.0) continue;
+      const OffsetAxis axis(origin[k]);
+      if (tokens.axis[k].size() != cols[k].size()) throw fail(std::string("cannot re-read particles.") + names[k]);
+      for (std::size_t i = 0; i < cols[k].size(); ++i) {
+        const auto v = axis.local_from_text(tokens.axis[k][i]);
+        if (!v) throw fail(std::string("particles.") + names[k] + "[" + std::to_string(i) + "] is not a number");
+        cols[k][i] = *v;
+      }
+    }
+  }
   Packing<D> out;
+  out.origin = origin;
   const std::size_t n = cols.front().size();
   out.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -139,7 +223,7 @@ Packing<D> packing_from_json(const std::string& text, const std::string& source_
 
 template std::string run_record_json<2>(const RunRecord&, const Packing<2>&);
 template std::string run_record_json<3>(const RunRecord&, const Packing<3>&);
-template Packing<2> packing_from_json<2>(const std::string&, const std::string&);
-template Packing<3> packing_from_json<3>(const std::string&, const std::string&);
+template Packing<2> packing_from_json<2>(const std::string&, const std::string&, const Vec2&);
+template Packing<3> packing_from_json<3>(const std::string&, const std::string&, const Vec3&);
 
 }  // namespace fp

@@ -4,11 +4,13 @@
 //
 // Layout (keys always present, in this order, so identical input gives identical bytes):
 //   frontpack_version, dimension, seed, n, scene {path, text}, container, distribution,
-//   bounds ({lo:[x,y,z], hi:[x,y,z]} or null), density, timings {name: seconds},
+//   bounds ({lo:[x,y,z], hi:[x,y,z]} absolute, or null), frame_origin [x,y,z], density,
+//   timings {name: seconds},
 //   metrics {name: value}, counters {name: integer}, info {name: string},
 //   and, when embedded, particles {x:[...], y:[...], (z:[...] in 3D), r:[...]}.
 // Doubles are printed in the shortest form that reads back to the same double; NaN and
-// infinities become null (JSON has no spelling for them).
+// infinities become null (JSON has no spelling for them). Particle coordinates are absolute,
+// written as the exact decimal of frame_origin + local (core/io/exact_decimal.hpp).
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -29,7 +31,8 @@ struct RunRecord {
   std::uint64_t n = 0;
   std::string container_description;
   std::string distribution_description;
-  std::optional<Aabb<3>> bounds;  ///< container bounds (2D: z = 0); also the LAMMPS box
+  std::optional<Aabb<3>> bounds;  ///< container bounds in the local frame (2D: z = 0); also the LAMMPS box
+  Vec3 origin = Vec3::Zero();     ///< the frame origin of the bounds and of the particles (absolute)
   double density = 1.0;           ///< particle density for the LAMMPS data file
   std::vector<std::pair<std::string, double>> timings;  ///< seconds
   std::vector<std::pair<std::string, double>> metrics;
@@ -53,11 +56,13 @@ std::string run_record_json(const RunRecord& record, const Packing<D>& packing);
 /// Writes run_record_json(record) atomically to `path` (see atomic_file.hpp).
 void write_run_record(const std::string& path, const RunRecord& record);
 
-/// Reads the particles embedded in a json output. Throws std::runtime_error naming
-/// `source_name` (and line/column for syntax errors) if the text is not such a file or its
-/// dimension is not D.
+/// Reads the particles embedded in a json output, into the frame of `origin` (centres =
+/// absolute - origin, subtracted exactly on the text; see packing_readers.hpp). Throws
+/// std::runtime_error naming `source_name` (and line/column for syntax errors) if the text is
+/// not such a file or its dimension is not D.
 template <int D>
-Packing<D> packing_from_json(const std::string& text, const std::string& source_name);
+Packing<D> packing_from_json(const std::string& text, const std::string& source_name,
+                             const Vec<D>& origin = Vec<D>::Zero());
 
 /// The "dimension" of a run record or json output. Throws like packing_from_json.
 int run_record_dimension(const std::string& text, const std::string& source_name);

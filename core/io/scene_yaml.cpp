@@ -20,6 +20,7 @@
 #include "core/geometry/ball_container.hpp"
 #include "core/geometry/box_container.hpp"
 #include "core/geometry/cylinder_container.hpp"
+#include "core/geometry/local_frame.hpp"
 #include "core/geometry/mesh_container.hpp"
 #include "core/geometry/polygon_container.hpp"
 #include "core/io/output_format.hpp"
@@ -318,14 +319,20 @@ ContainerPtr<D> parse_box(const Map& m) {
     if (!(lo[k] < hi[k]))
       max.fail(std::string("must be greater than container.min on every axis; on ") + axis[k] + " min is " +
                std::to_string(lo[k]) + " and max is " + std::to_string(hi[k]));
-  return construct(m, [&] { return std::make_shared<const BoxContainer<D>>(lo, hi); });
+  Aabb<D> box;
+  box.extend(lo);
+  box.extend(hi);
+  return construct(m, [&] { return std::make_shared<const BoxContainer<D>>(lo, hi, frame_origin<D>(box)); });
 }
 
 template <int D>
 ContainerPtr<D> parse_ball(const Map& m) {
   const Vec<D> c = m.get("center").vec<D>(dim_text(D));
   const double r = m.get("radius").positive();
-  return construct(m, [&] { return std::make_shared<const BallContainer<D>>(c, r); });
+  Aabb<D> box;
+  box.extend(c.array() - r);
+  box.extend(c.array() + r);
+  return construct(m, [&] { return std::make_shared<const BallContainer<D>>(c, r, frame_origin<D>(box)); });
 }
 
 ContainerPtr<3> parse_cylinder(const Map& m) {
@@ -337,7 +344,14 @@ ContainerPtr<3> parse_cylinder(const Map& m) {
   }
   const double r = m.get("radius").positive();
   const double h = m.get("height").positive();
-  return construct(m, [&] { return std::make_shared<const CylinderContainer>(base, axis, r, h); });
+  // The frame from a box around both caps (it need not be tight).
+  Aabb<3> box;
+  const Vec3 top = base + h * axis.normalized();
+  for (const Vec3& end : {base, top}) {
+    box.extend(end.array() - r);
+    box.extend(end.array() + r);
+  }
+  return construct(m, [&] { return std::make_shared<const CylinderContainer>(base, axis, r, h, frame_origin<3>(box)); });
 }
 
 ContainerPtr<2> parse_polygon(const Map& m) {
@@ -345,7 +359,9 @@ ContainerPtr<2> parse_polygon(const Map& m) {
   std::vector<Vec2> vertices;
   for (const auto& item : v.list()) vertices.push_back(item.vec<2>("a 2D point"));
   if (vertices.size() < 3) v.fail("a polygon needs at least 3 vertices, got " + std::to_string(vertices.size()));
-  return construct(m, [&] { return std::make_shared<const PolygonContainer>(vertices); });
+  Aabb<2> box;
+  for (const Vec2& p : vertices) box.extend(p);
+  return construct(m, [&] { return std::make_shared<const PolygonContainer>(vertices, frame_origin<2>(box)); });
 }
 
 ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx) {
@@ -366,7 +382,7 @@ ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx) {
   }
   double scale = 1.0;
   if (auto s = m.find("scale")) scale = s->positive();
-  return construct(m, [&]() -> ContainerPtr<3> { return MeshContainer::from_file(resolved, scale); });
+  return construct(m, [&]() -> ContainerPtr<3> { return MeshContainer::from_file(resolved, scale, FrameChoice::Local); });
 }
 
 template <int D>
@@ -551,7 +567,7 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
   }
   if (auto x = m.find("seed_point")) {
     const Vec<D> s = x->vec<D>(dim_text(D));
-    if (!container.inside(s)) x->fail("the point is outside the container (" + container.describe() + ")");
+    if (!container.inside(s - container.origin())) x->fail("the point is outside the container (" + container.describe() + ")");
     p.seed_point = std::vector<double>(s.data(), s.data() + D);
   }
 }
@@ -623,7 +639,7 @@ void check_sizes_fit(const Value& radius, const Container<D>& container, const R
     os.precision(6);
     os << (radii.r_min() > clearance ? "no particle" : "the largest particles") << " (radius up to " << radii.r_max()
        << ") fit nowhere in the container (" << container.describe() << "): its deepest point found, ("
-       << deep.transpose() << "), is only " << clearance << " from the boundary";
+       << (deep + container.origin()).transpose() << "), is only " << clearance << " from the boundary";
     radius.fail(os.str());
   }
 }

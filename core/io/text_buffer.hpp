@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 
+#include "core/io/exact_decimal.hpp"
+
 namespace fp {
 
 // Builds text in memory in blocks and hands them to the stream (one virtual call per block).
@@ -21,6 +23,13 @@ class TextBuffer {
     char tmp[32];
     const auto res = std::to_chars(tmp, tmp + sizeof tmp, v);  // shortest round-trip form
     buf_.append(tmp, res.ptr);
+    return *this;
+  }
+  /// An absolute coordinate: the exact decimal of axis origin + local (core/io/exact_decimal.hpp);
+  /// the plain number when the origin is 0.
+  TextBuffer& coordinate(double local, const OffsetAxis& axis) {
+    if (axis.zero()) return number(local);
+    axis.append_absolute(buf_, local);
     return *this;
   }
   /// JSON has no spelling for NaN and infinities: null.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 #include <cstdio>
 #include <memory>
 
@@ -31,7 +32,7 @@ std::unique_ptr<Container<D>> bounding_box_of_balls(const Packing<D>& packing) {
     box.extend(packing.centers[i] + Vec<D>::Constant(r));
   }
   if (!((box.hi.array() > box.lo.array()).all())) return nullptr;
-  return std::make_unique<BoxContainer<D>>(box.lo, box.hi);
+  return std::make_unique<BoxContainer<D>>(BoxContainer<D>::from_local(box.lo, box.hi, packing.origin));
 }
 
 }  // namespace
@@ -122,6 +123,8 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
     a.container_from_particles = true;
   }
   const Container<D>* container = own ? own.get() : container_or_null;
+  if (container && container->origin() != packing.origin)
+    throw std::invalid_argument("analyze_packing: the packing and the container are in different frames");
   if (container == nullptr) return a;  // no ball with a positive size: nothing to measure
   a.container = container->describe();
   a.container_measure = container->measure();
@@ -159,7 +162,8 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
 
   timed(t, "volume fraction", [&] {
     const Vec<D> c = container->interior_point();
-    a.reference_center.assign(c.data(), c.data() + D);
+    const Vec<D> shown = c + container->origin();  // reported in absolute coordinates
+    a.reference_center.assign(shown.data(), shown.data() + D);
     a.reference_radius = -container->signed_distance(c);
     if (a.reference_radius > 0.0) {
       const double from = a.r_max > 0.0 ? std::min(a.r_max, a.reference_radius) : a.reference_radius;

@@ -19,6 +19,7 @@
 #include "core/io/atomic_file.hpp"
 #include "core/io/lammps_box.hpp"
 #include "core/io/text_buffer.hpp"
+#include "core/io/vtu_frame_field.hpp"
 #include "shapes/spherocylinder_shape.hpp"
 
 namespace fp {
@@ -102,7 +103,8 @@ struct VtuArray {
 };
 
 void write_vtu(std::ostream& out, const std::string& path, std::uint64_t n_points, std::uint64_t n_cells,
-               const std::string& point_attributes, const std::vector<VtuArray>& arrays) {
+               const std::string& point_attributes, const std::vector<VtuArray>& arrays,
+               const std::string& field_data = "") {
   std::vector<std::uint64_t> offsets;
   std::uint64_t offset = 0;
   for (const auto& a : arrays) {
@@ -126,6 +128,7 @@ void write_vtu(std::ostream& out, const std::string& path, std::uint64_t n_point
   h += std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
   h += "\" header_type=\"UInt64\">\n";
   h += "  <UnstructuredGrid>\n";
+  h += field_data;
   h += "    <Piece NumberOfPoints=\"" + std::to_string(n_points) + "\" NumberOfCells=\"" + std::to_string(n_cells) +
        "\">\n";
   h += "      <PointData" + point_attributes + ">\n" + section(VtuArray::PointData, "        ") + "      </PointData>\n";
@@ -187,9 +190,19 @@ void write_centres_vtu(std::ostream& out, const std::string& path, const ShapePa
     a.push_back({S::PointData, "Float64", axes[k], 3, 3 * n, 8, [&ps, k](RawOut& o) {
                    for (const auto& q : ps) o.put3(world_axis<D>(q.pose, k));
                  }});
-  a.push_back({S::Points, "Float64", "Points", 3, 3 * n, 8, [&ps](RawOut& o) {
-                 for (const auto& q : ps) o.put3(embed<D>(q.pose.position));
+  // Points are absolute (rounded to doubles); away from the origin the exact positions follow as
+  // local_position relative to the field frame_origin, as for spheres (core/io/packing_writers.cpp).
+  const Vec3 origin = embed<D>(p.origin);
+  a.push_back({S::Points, "Float64", "Points", 3, 3 * n, 8, [&ps, origin](RawOut& o) {
+                 for (const auto& q : ps) o.put3(origin + embed<D>(q.pose.position));
                }});
+  std::string field;
+  if (!p.origin.isZero()) {
+    a.push_back({S::PointData, "Float64", "local_position", 3, 3 * n, 8, [&ps](RawOut& o) {
+                   for (const auto& q : ps) o.put3(embed<D>(q.pose.position));
+                 }});
+    field = vtu_frame_origin_field(origin.x(), origin.y(), origin.z());
+  }
   a.push_back({S::Cells, "Int64", "connectivity", 1, n, 8, [n](RawOut& o) {
                  for (std::uint64_t i = 0; i < n; ++i) o.put<std::int64_t>(static_cast<std::int64_t>(i));
                }});
@@ -199,7 +212,7 @@ void write_centres_vtu(std::ostream& out, const std::string& path, const ShapePa
   a.push_back({S::Cells, "UInt8", "types", 1, n, 1, [n](RawOut& o) {
                  for (std::uint64_t i = 0; i < n; ++i) o.put<std::uint8_t>(kVtkVertex);
                }});
-  write_vtu(out, path, n, n, " Scalars=\"bounding_radius\" Vectors=\"axis_x\"", a);
+  write_vtu(out, path, n, n, " Scalars=\"bounding_radius\" Vectors=\"axis_x\"", a, field);
 }
 
 // One particle's display surface in the world, as VTK cells (local point indices).
@@ -360,9 +373,10 @@ void write_surfaces_vtu(std::ostream& out, const std::string& path, const ShapeP
                  for (std::size_t i = 0; i < n; ++i)
                    for (std::size_t c = 0; c < s.cells_of(i); ++c) o.put<std::int64_t>(p.particles[i].template_id);
                }});
-  a.push_back({S::Points, "Float64", "Points", 3, 3 * s.n_points, 8, [&s, n](RawOut& o) {
+  const Vec3 origin = embed<D>(p.origin);  // display only: absolute, rounded to doubles
+  a.push_back({S::Points, "Float64", "Points", 3, 3 * s.n_points, 8, [&s, n, origin](RawOut& o) {
                  for (std::size_t i = 0; i < n; ++i)
-                   for (const auto& x : s.get(i).points) o.put3(x);
+                   for (const auto& x : s.get(i).points) o.put3(origin + x);
                }});
   a.push_back({S::Cells, "Int64", "connectivity", 1, s.n_connectivity, 8, [&s, n](RawOut& o) {
                  std::int64_t base = 0;
@@ -391,6 +405,7 @@ void write_surfaces_vtu(std::ostream& out, const std::string& path, const ShapeP
 
 template <int D>
 void write_csv(std::ostream& out, const ShapePacking<D>& p) {
+  const auto axes = offset_axes(p.origin.data(), D);
   TextBuffer b(out);
   const auto& ps = p.particles;
   const bool segments = !ps.empty() && std::all_of(ps.begin(), ps.end(), [](const Particle<D>& q) {
@@ -402,8 +417,8 @@ void write_csv(std::ostream& out, const ShapePacking<D>& p) {
       const auto& s = static_cast<const SpherocylinderShape<D>&>(*ps[i].shape);
       const Vec<D> a = ps[i].pose.to_world(s.end_a()), e = ps[i].pose.to_world(s.end_b());
       b.integer(static_cast<std::int64_t>(i)).ch(',').integer(ps[i].template_id);
-      for (int k = 0; k < D; ++k) b.ch(',').number(a[k]);
-      for (int k = 0; k < D; ++k) b.ch(',').number(e[k]);
+      for (int k = 0; k < D; ++k) b.ch(',').coordinate(a[k], axes[k]);
+      for (int k = 0; k < D; ++k) b.ch(',').coordinate(e[k], axes[k]);
       b.ch(',').number(s.radius()).ch('\n');
     }
   } else {
@@ -413,7 +428,7 @@ void write_csv(std::ostream& out, const ShapePacking<D>& p) {
     for (std::size_t i = 0; i < ps.size(); ++i) {
       const auto& q = ps[i];
       b.integer(static_cast<std::int64_t>(i)).ch(',').integer(q.template_id).ch(',').text(q.shape->kind());
-      for (int k = 0; k < D; ++k) b.ch(',').number(q.pose.position[k]);
+      for (int k = 0; k < D; ++k) b.ch(',').coordinate(q.pose.position[k], axes[k]);
       const Eigen::Vector4d w = quaternion_of<D>(q.pose.rotation);
       for (int k = 0; k < 4; ++k) b.ch(',').number(w[k]);
       b.ch(',').number(q.size).ch(',').number(q.shape->bounding_radius()).ch('\n');
@@ -481,6 +496,7 @@ std::string normalised_json(const std::string& in) {
 template <int D>
 void write_json(std::ostream& out, const ShapePacking<D>& p, const RunRecord& record) {
   const auto& ps = p.particles;
+  const auto axes = offset_axes(p.origin.data(), D);
   RunRecord rec = record;
   rec.n = ps.size();
   rec.dimension = D;
@@ -527,7 +543,12 @@ void write_json(std::ostream& out, const ShapePacking<D>& p, const RunRecord& re
     b.text(i == 0 ? "\n    " : ",\n    ");
     b.text("{\"id\": ").integer(static_cast<std::int64_t>(i)).text(", \"shape_id\": ").integer(q.template_id);
     const Vec3 x = embed<D>(q.pose.position);
-    b.text(", \"position\": [").json_number(x[0]).text(", ").json_number(x[1]).text(", ").json_number(x[2]);
+    b.text(", \"position\": [");
+    for (int k = 0; k < 3; ++k) {
+      if (k) b.text(", ");
+      if (std::isfinite(x[k])) b.coordinate(x[k], axes[k]);
+      else b.json_number(x[k]);
+    }
     const Eigen::Vector4d w = quaternion_of<D>(q.pose.rotation);
     b.text("], \"quaternion\": [").json_number(w[0]);
     for (int k = 1; k < 4; ++k) b.text(", ").json_number(w[k]);
@@ -541,6 +562,7 @@ void write_json(std::ostream& out, const ShapePacking<D>& p, const RunRecord& re
 
 template <int D>
 void write_yade(std::ostream& out, const ShapePacking<D>& p, const RunRecord& rec) {
+  const auto axes = offset_axes(p.origin.data(), D);
   TextBuffer b(out);
   b.text("#format x_y_z_r_clumpId").ch('\n');
   b.text("# ").text(producer(rec)).text(", ").integer(D).text(
@@ -551,7 +573,8 @@ void write_yade(std::ostream& out, const ShapePacking<D>& p, const RunRecord& re
     const auto& q = p.particles[i];
     for (const auto& ball : q.shape->hull_balls()) {
       const Vec3 c = embed<D>(q.pose.to_world(ball.center));
-      b.number(c.x()).ch(' ').number(c.y()).ch(' ').number(c.z()).ch(' ').number(ball.radius).ch(' ');
+      for (int k = 0; k < 3; ++k) b.coordinate(c[k], axes[k]).ch(' ');
+      b.number(ball.radius).ch(' ');
       b.integer(static_cast<std::int64_t>(i)).ch('\n');
     }
   }
@@ -576,6 +599,7 @@ void write_lammps(std::ostream& data, std::ostream& clumps, const std::string& p
   const Vec3& hi = box.hi;
   const std::size_t n_types = std::max<std::size_t>(1, template_count(p.template_names, max_id));
   const std::string companion = file_name(multisphere_path(path));
+  const auto axes = offset_axes(p.origin.data(), D);
 
   TextBuffer b(data);
   b.text("LAMMPS data file (atom_style sphere) written by ").text(producer(rec)).text(", ");
@@ -588,7 +612,7 @@ void write_lammps(std::ostream& data, std::ostream& clumps, const std::string& p
   b.ch('\n');
   const char* axis[] = {"x", "y", "z"};
   for (int k = 0; k < 3; ++k)
-    b.number(lo[k]).ch(' ').number(hi[k]).ch(' ').text(axis[k]).text("lo ").text(axis[k]).text("hi").ch('\n');
+    b.coordinate(lo[k], axes[k]).ch(' ').coordinate(hi[k], axes[k]).ch(' ').text(axis[k]).text("lo ").text(axis[k]).text("hi").ch('\n');
   b.ch('\n');
   b.text("Atoms # sphere").ch('\n');
   b.ch('\n');
@@ -614,7 +638,7 @@ void write_lammps(std::ostream& data, std::ostream& clumps, const std::string& p
     const Eigen::Vector4d w = quaternion_of<D>(q.pose.rotation);
     m.integer(static_cast<std::int64_t>(i)).ch(' ').integer(static_cast<std::int64_t>(balls.size()));
     m.ch(' ').integer(q.template_id);
-    for (int k = 0; k < 3; ++k) m.ch(' ').number(x[k]);
+    for (int k = 0; k < 3; ++k) m.ch(' ').coordinate(x[k], axes[k]);
     for (int k = 0; k < 4; ++k) m.ch(' ').number(w[k]);
     m.ch('\n');
     for (const auto& ball : balls) {
@@ -622,7 +646,7 @@ void write_lammps(std::ostream& data, std::ostream& clumps, const std::string& p
       m.number(body.x()).ch(' ').number(body.y()).ch(' ').number(body.z()).ch(' ').number(ball.radius).ch('\n');
       const Vec3 c = embed<D>(q.pose.to_world(ball.center));
       b.integer(++atom).ch(' ').integer(q.template_id + 1).ch(' ').number(2.0 * ball.radius).ch(' ').number(rec.density);
-      for (int k = 0; k < 3; ++k) b.ch(' ').number(c[k]);
+      for (int k = 0; k < 3; ++k) b.ch(' ').coordinate(c[k], axes[k]);
       b.ch('\n');
     }
   }

@@ -51,7 +51,7 @@ double bulk_mean_coordination(const fp::Packing<D>& P, const SignedDistance<D>& 
   double sum = 0;
   count = 0;
   for (std::size_t i = 0; i < P.size(); ++i) {
-    if (-sd(P.centers[i]) - P.radii[i] < depth) continue;
+    if (-sd(P.centers[i], P.origin) - P.radii[i] < depth) continue;
     sum += z[i];
     ++count;
   }

@@ -93,13 +93,18 @@ std::vector<int> particle_contacts(const fp::Packing<D>& P, double tol) {
 }
 
 // ---- closed-form signed distances (< 0 inside) ----------------------------------------------
+// Called with a point in a packing's local frame and that frame's origin (absolute): the
+// container's absolute geometry is moved into the frame (x - origin, exact near the container,
+// core/geometry/local_frame.hpp) and the distance computed there, so that far-off coordinates
+// are checked to the same relative tolerance as plain ones, with no code of the library.
 
 template <int D>
-using SignedDistance = std::function<double(const Vec<D>&)>;
+using SignedDistance = std::function<double(const Vec<D>& local, const Vec<D>& origin)>;
 
 template <int D>
-SignedDistance<D> box_distance(Vec<D> lo, Vec<D> hi) {
-  return [=](const Vec<D>& p) {
+SignedDistance<D> box_distance(Vec<D> lo_abs, Vec<D> hi_abs) {
+  return [=](const Vec<D>& p, const Vec<D>& origin) {
+    const Vec<D> lo = lo_abs - origin, hi = hi_abs - origin;
     double outside2 = 0, inside = std::numeric_limits<double>::infinity();
     for (int a = 0; a < D; ++a) {
       const double below = lo[a] - p[a], above = p[a] - hi[a];
@@ -113,13 +118,13 @@ SignedDistance<D> box_distance(Vec<D> lo, Vec<D> hi) {
 
 template <int D>
 SignedDistance<D> ball_distance(Vec<D> c, double R) {
-  return [=](const Vec<D>& p) { return (p - c).norm() - R; };
+  return [=](const Vec<D>& p, const Vec<D>& origin) { return (p - (c - origin)).norm() - R; };
 }
 
 inline SignedDistance<3> cylinder_distance(Vec3 base, Vec3 axis, double R, double h) {
   axis.normalize();
-  return [=](const Vec3& p) {
-    const Vec3 d = p - base;
+  return [=](const Vec3& p, const Vec3& origin) {
+    const Vec3 d = p - (base - origin);
     const double t = d.dot(axis);
     const double rho = (d - t * axis).norm();
     const double dr = rho - R, dt = std::max(-t, t - h);
@@ -136,8 +141,10 @@ inline double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
 }
 
 /// Simple polygon: distance to the nearest edge, sign by the crossing number.
-inline SignedDistance<2> polygon_distance(std::vector<Vec2> v) {
-  return [v = std::move(v)](const Vec2& p) {
+inline SignedDistance<2> polygon_distance(std::vector<Vec2> v_abs) {
+  return [v_abs = std::move(v_abs)](const Vec2& p, const Vec2& origin) {
+    std::vector<Vec2> v = v_abs;
+    for (Vec2& x : v) x -= origin;
     double dist = std::numeric_limits<double>::infinity();
     bool in = false;
     const std::size_t n = v.size();
@@ -176,11 +183,11 @@ inline Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, con
 /// (sum of the facets' solid angles, Van Oosterom & Strackee): ~±1 inside, ~0 outside, so it
 /// does not depend on the facets' orientation being outward, only consistent.
 inline SignedDistance<3> mesh_distance(std::vector<Vec3> v, std::vector<std::array<int, 3>> t) {
-  return [v = std::move(v), t = std::move(t)](const Vec3& p) {
+  return [v = std::move(v), t = std::move(t)](const Vec3& p, const Vec3& origin) {
     double dist2 = std::numeric_limits<double>::infinity();
     double omega = 0;
     for (const auto& f : t) {
-      const Vec3 &a = v[f[0]], &b = v[f[1]], &c = v[f[2]];
+      const Vec3 a = v[f[0]] - origin, b = v[f[1]] - origin, c = v[f[2]] - origin;
       dist2 = std::min(dist2, (closest_on_triangle(p, a, b, c) - p).squaredNorm());
       const Vec3 x = a - p, y = b - p, z = c - p;
       const double lx = x.norm(), ly = y.norm(), lz = z.norm();
@@ -204,7 +211,7 @@ ContainmentReport containment(const fp::Packing<D>& P, const SignedDistance<D>& 
   ContainmentReport rep;
   for (std::size_t i = 0; i < P.size(); ++i) {
     const double r = P.radii[i];
-    const double out = (sd(P.centers[i]) + r) / r;
+    const double out = (sd(P.centers[i], P.origin) + r) / r;
     if (out > rep.max_outside_over_r) {
       rep.max_outside_over_r = out;
       rep.worst = i;

@@ -489,17 +489,17 @@ ShapeContainmentReport<D> shape_containment(const fp::ShapePacking<D>& P, const 
     const fp::Particle<D>& p = ps[i];
     const double R = p.bounding_radius();
     double most = -std::numeric_limits<double>::infinity();
-    for (const SurfacePoint<D>& s : surface_samples(p, dirs)) most = std::max(most, sd(s.x));
+    for (const SurfacePoint<D>& s : surface_samples(p, dirs)) most = std::max(most, sd(s.x, P.origin));
     // Hull balls of a swept-sphere shape are exact; for the others they are (slightly outside)
     // points of a circumscribing polytope, which the packer keeps inside too.
-    for (const fp::Ball<D>& b : p.shape->hull_balls()) most = std::max(most, sd(p.pose.to_world(b.center)) + b.radius);
+    for (const fp::Ball<D>& b : p.shape->hull_balls()) most = std::max(most, sd(p.pose.to_world(b.center), P.origin) + b.radius);
     if (most / R > rep.max_outside_rel) {
       rep.max_outside_rel = most / R;
       rep.worst = static_cast<int>(i);
     }
     rep.wall_gap_rel[i] = -most / R;
     for (const Vec<D>& x : boundary_points)
-      if (strictly_inside(p, x, eps_rel * R)) {
+      if (strictly_inside(p, Vec<D>(x - P.origin), eps_rel * R)) {  // boundary points are absolute
         ++rep.boundary_points_inside;
         rep.worst_boundary_particle = static_cast<int>(i);
         rep.worst_boundary_point = x;

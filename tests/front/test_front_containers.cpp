@@ -42,7 +42,7 @@ void pack_and_check(const std::string& name, const std::string& yaml, const Sign
   const std::vector<int> z_particles = particle_contacts<D>(P, 1e-8);
   std::size_t under = 0;
   for (std::size_t i = 0; i < P.size(); ++i) {
-    const bool wall = sd(P.centers[i]) + P.radii[i] >= -1e-8 * P.radii[i];
+    const bool wall = sd(P.centers[i], P.origin) + P.radii[i] >= -1e-8 * P.radii[i];
     if (!wall && z_particles[i] < D) ++under;
   }
   EXPECT_LE(under, static_cast<std::size_t>(D) * (1 + res.counters.voids_seeded)) << name << ": particles with < D contacts";
@@ -172,7 +172,7 @@ particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
 stop: {particles: 500}
 )");
   const auto res = fp::pack<3>(scene);
-  for (const Vec3& c : res.packing.centers) EXPECT_NEAR(scene.container3->signed_distance(c), sd(c), 1e-12);
+  for (const Vec3& c : res.packing.centers) EXPECT_NEAR(scene.container3->signed_distance(c), sd(c, res.packing.origin), 1e-12);
 }
 
 TEST(FrontContainers, Rectangle2D) {

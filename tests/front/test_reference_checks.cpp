@@ -58,14 +58,19 @@ TEST(ReferenceChecks, MeshAndPolygonDistancesAgreeWithTheBox) {
   fp::Rng rng(9);
   for (int i = 0; i < 2000; ++i) {
     const Vec3 p(rng.uniform(-0.5, 1.5), rng.uniform(-0.5, 1.5), rng.uniform(-0.5, 1.5));
-    EXPECT_NEAR(mesh(p), box3(p), 1e-14) << p.transpose();
+    EXPECT_NEAR(mesh(p, Vec3::Zero()), box3(p, Vec3::Zero()), 1e-14) << p.transpose();
     const Vec2 q = p.head<2>();
-    EXPECT_NEAR(poly(q), box2(q), 1e-14) << q.transpose();
+    EXPECT_NEAR(poly(q, Vec2::Zero()), box2(q, Vec2::Zero()), 1e-14) << q.transpose();
+    // In a frame with origin o the same point is p - o.
+    const Vec3 o(0.5, -0.25, 1.0);
+    EXPECT_NEAR(mesh(p - o, o), box3(p, Vec3::Zero()), 1e-14);
+    EXPECT_NEAR(poly(q - o.head<2>(), o.head<2>()), box2(q, Vec2::Zero()), 1e-14);
   }
   const auto cyl = cylinder_distance(Vec3::Zero(), Vec3(0, 0, 2), 1.0, 2.0);
-  EXPECT_DOUBLE_EQ(cyl(Vec3(0, 0, 1)), -1.0);
-  EXPECT_DOUBLE_EQ(cyl(Vec3(0.5, 0, 1.8)), -0.2);
-  EXPECT_DOUBLE_EQ(cyl(Vec3(2, 0, 3)), std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(cyl(Vec3(0, 0, 1), Vec3::Zero()), -1.0);
+  EXPECT_DOUBLE_EQ(cyl(Vec3(0.5, 0, 1.8), Vec3::Zero()), -0.2);
+  EXPECT_DOUBLE_EQ(cyl(Vec3(2, 0, 3), Vec3::Zero()), std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(cyl(Vec3(-1, 0, -1), Vec3(3, 0, 4)), std::sqrt(2.0));
 }
 
 }  // namespace
