@@ -47,7 +47,8 @@ inline std::vector<std::pair<std::string, std::uint64_t>> front_counter_entries(
           {"rejected_overlap", c.rejected_overlap}, {"rejected_container", c.rejected_container},
           {"wall_bodies", c.wall_bodies},         {"radii_drawn", c.radii_drawn},
           {"radii_unplaced", c.radii_unplaced},   {"max_neighbours", c.max_neighbours},
-          {"voids_reopened", c.voids_reopened},   {"voids_seeded", c.voids_seeded}};
+          {"voids_reopened", c.voids_reopened},   {"voids_seeded", c.voids_seeded},
+          {"two_contact_placements", c.two_contact_placements}};
 }
 
 /// The first two lines of the summary: what was run, and in which container.

@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "contact/sphere_contact_solver.hpp"
+#include "contact/sphere_two_contact.hpp"
 #include "core/geometry/container.hpp"
 #include "core/geometry/neighbour_grid.hpp"
 #include "core/io/scene.hpp"
@@ -247,29 +248,66 @@ class AdvancingFront {
       add_particle(P, res, c2, r2);
       i2 = static_cast<int>(P.size()) - 1;
     }
+    if (i2 < 0) {  // a thin container (slab, needle): search the narrow window of directions
+      const std::size_t k2 = largest_in_pool();
+      const double r2 = pool_[k2];
+      const Vec<D> u = front_parts::direction_with_most_room<D>(P.centers[i1], r1 + r2,
+                                                                [&](const Vec<D>& x) { return room(x, r2); });
+      const Vec<D> c2 = P.centers[i1] + (r1 + r2) * u;
+      if (fits(c2, r2)) {
+        take_from_pool(k2, res);
+        add_particle(P, res, c2, r2);
+        i2 = static_cast<int>(P.size()) - 1;
+      }
+    }
     if constexpr (D == 3) {
       if (i2 < 0 || count_or_fraction_reached(P, res)) return;
+      const std::size_t k3 = largest_in_pool();
+      const double r3 = pool_[k3];
+      // The circle of centres tangent to both.
+      const Vec3 a = P.centers[i1], b = P.centers[i2];
+      const double ra = P.radii[i1] + r3, rb = P.radii[i2] + r3;
+      const Vec3 ab = b - a;
+      const double d = ab.norm();
+      const Vec3 k = ab / d;
+      const double x = (d * d + ra * ra - rb * rb) / (2 * d);
+      const double h = std::sqrt(std::max(0.0, ra * ra - x * x));
+      Vec3 e1 = (std::abs(k.x()) < 0.6 ? Vec3::UnitX() : Vec3::UnitY()).cross(k).normalized();
+      const Vec3 e2 = k.cross(e1);
+      auto on_circle = [&](double phi) -> Vec3 { return a + x * k + h * (std::cos(phi) * e1 + std::sin(phi) * e2); };
       for (int attempt = 0; attempt < 64; ++attempt) {
-        const std::size_t k3 = largest_in_pool();
-        const double r3 = pool_[k3];
-        // On the circle of centres tangent to both: pick a random point of it.
-        const Vec3 a = P.centers[i1], b = P.centers[i2];
-        const double ra = P.radii[i1] + r3, rb = P.radii[i2] + r3;
-        const Vec3 ab = b - a;
-        const double d = ab.norm();
-        const Vec3 k = ab / d;
-        const double x = (d * d + ra * ra - rb * rb) / (2 * d);
-        const double h = std::sqrt(std::max(0.0, ra * ra - x * x));
-        Vec3 e1 = (std::abs(k.x()) < 0.6 ? Vec3::UnitX() : Vec3::UnitY()).cross(k).normalized();
-        const Vec3 e2 = k.cross(e1);
-        const double phi = 2 * kPi * rng_.uniform01();
-        const Vec3 c3 = a + x * k + h * (std::cos(phi) * e1 + std::sin(phi) * e2);
+        const Vec3 c3 = on_circle(2 * kPi * rng_.uniform01());  // a random point of it
         if (!fits(c3, r3)) continue;
         take_from_pool(k3, res);
         add_particle(P, res, c3, r3);
-        break;
+        return;
+      }
+      // A slab leaves a window of a few degrees: the point of the circle with the most room.
+      constexpr int kSteps = 4096;
+      double best_room = -std::numeric_limits<double>::infinity(), best_phi = 0;
+      for (int s = 0; s < kSteps; ++s) {
+        const double phi = 2 * kPi * s / kSteps, g = room(on_circle(phi), r3);
+        if (g > best_room) best_room = g, best_phi = phi;
+      }
+      for (double step = kPi / kSteps; step > 1e-9; step *= 0.5)
+        for (const double phi : {best_phi - step, best_phi + step}) {
+          const double g = room(on_circle(phi), r3);
+          if (g > best_room) best_room = g, best_phi = phi;
+        }
+      const Vec3 c3 = on_circle(best_phi);
+      if (fits(c3, r3)) {
+        take_from_pool(k3, res);
+        add_particle(P, res, c3, r3);
       }
     }
+  }
+
+  /// How far the ball (x, r) is from touching the container boundary or a placed particle
+  /// (> 0: it fits with that much to spare): what the thin-container searches maximise.
+  double room(const Vec<D>& x, double r) const {
+    double g = -container_.signed_distance(x) - r;
+    grid_.for_each_within(x, r, [&](int, const Vec<D>&, double rk, double d2) { g = std::min(g, std::sqrt(d2) - rk - r); });
+    return g;
   }
 
   /// The ball (x, r), inside the container, touches its boundary (within the contact tolerance).
@@ -408,32 +446,37 @@ class AdvancingFront {
     // nestled closer to the seed that leave sub-particle gaps at the wall (measured in
     // experiments/front-levers: ~7x more wall contacts and a denser boundary layer).
     int best_rank = 2;
+    bool any_position = false;  // some pair had a solution (valid or not)
+    // A candidate x touching s0 and bodies of the given rank (0: a wall among them): returns
+    // true to end the scan.
+    auto test = [&](const Vec<D>& x, int rank) -> bool {
+      ++res.counters.candidates;
+      double d2 = 0;
+      if (!keep_first) {
+        d2 = (x - seed_point_).squaredNorm();
+        if (found && (rank > best_rank || (rank == best_rank && d2 >= best_d2))) return false;
+      }
+      if (overlaps_neighbour(x, r)) { ++res.counters.rejected_overlap; return false; }
+      if (!container_.contains_ball(x, r, tol_)) { ++res.counters.rejected_container; return false; }
+      // A mesh facet or polygon edge is offered as its whole plane (line): a position tangent
+      // to the plane beyond the facet's edges does not touch the container at all.
+      if (rank == 0 && !touches_boundary(x, r)) { ++res.counters.rejected_container; return false; }
+      found = true;
+      best = x;
+      best_d2 = d2;
+      best_rank = rank;
+      return keep_first || (rank == 0 && best_d2 <= lower_bound2);
+    };
     auto consider = [&](int i, int j) -> bool {  // returns true to end the scan
       ++res.counters.solves;
       const int m = session_.solve(i, j, std::span<Placement<D>>(out.data(), out.size()));
       const int rank = (bodies_[i].is_wall() || bodies_[j].is_wall()) ? 0 : 1;
+      any_position |= m > 0;
       for (int q = 0; q < m; ++q) {
-        const Vec<D>& x = out[q].position;
-        ++res.counters.candidates;
-        double d2 = 0;
-        if (!keep_first) {
-          d2 = (x - seed_point_).squaredNorm();
-          if (found && (rank > best_rank || (rank == best_rank && d2 >= best_d2))) continue;
-        }
-        if (overlaps_neighbour(x, r)) { ++res.counters.rejected_overlap; continue; }
-        if (!container_.contains_ball(x, r, tol_)) { ++res.counters.rejected_container; continue; }
-        // A mesh facet or polygon edge is offered as its whole plane (line): a position tangent
-        // to the plane beyond the facet's edges does not touch the container at all.
-        if (rank == 0 && !touches_boundary(x, r)) { ++res.counters.rejected_container; continue; }
-        found = true;
-        best = x;
-        best_d2 = d2;
-        best_rank = rank;
-        if (keep_first || (rank == 0 && best_d2 <= lower_bound2)) return true;
+        if (test(out[q].position, rank)) return true;
       }
       return false;
     };
-
     if constexpr (D == 2) {
       for (int i = 0; i < nb; ++i) {
         ++res.counters.pairs_considered;
@@ -452,6 +495,17 @@ class AdvancingFront {
           }
           if (consider(i, j)) { stop = true; break; }
         }
+      }
+      // No pair had any position: a container too narrow for three contacts (a needle, a
+      // capillary). Positions touching s0 and one body keep the growth going along the wall.
+      if (!any_position) {
+        for (int b = 0; b < nb && !(found && keep_first); ++b) {
+          two_contact_.clear();
+          two_contact_positions(c0, r0, bodies_[b], r, kTwoContactSamples, two_contact_);
+          for (const Vec<D>& x : two_contact_)
+            if (test(x, bodies_[b].is_wall() ? 0 : 1)) break;
+        }
+        if (found) ++res.counters.two_contact_placements;
       }
     }
     return found;
@@ -494,6 +548,8 @@ class AdvancingFront {
   std::vector<Neighbour> nb_;
   std::vector<Wall<D>> walls_;
   std::vector<Body<D>> bodies_;
+  std::vector<Vec<D>> two_contact_;  // scratch: positions touching s0 and one body (3D fallback)
+  static constexpr int kTwoContactSamples = 24;  // per body: about 15 degrees apart
   std::vector<Vec<D>> nb_c_;   // V's centres and radii, contiguous for the overlap test
   std::vector<double> nb_r_;
   int last_blocker_ = 0;

@@ -81,6 +81,61 @@ Vec<D> random_unit(Rng& rng) {
   }
 }
 
+/// Directions spread evenly over the unit sphere (Fibonacci lattice) or circle, n of them.
+template <int D>
+Vec<D> spread_direction(int k, int n) {
+  if constexpr (D == 2) {
+    const double phi = 2 * kPi * (k + 0.5) / n;
+    return Vec2(std::cos(phi), std::sin(phi));
+  } else {
+    const double z = 1 - (2 * k + 1.0) / n;
+    const double phi = k * 2.399963229728653;  // the golden angle
+    const double s = std::sqrt(std::max(0.0, 1 - z * z));
+    return Vec3(s * std::cos(phi), s * std::sin(phi), z);
+  }
+}
+
+/// The direction u (unit) that maximises room(c + dist * u), for when random directions found
+/// no place for a particle touching the one at c: a thin container (a slab, a needle) leaves
+/// only a small window of directions. Evenly spread directions, then a pattern search around
+/// the best one (angles halved down to 1e-7 rad), so that windows narrower than the sampling
+/// are found too. `room` > 0 where the particle fits in the container.
+template <int D, class Room>
+Vec<D> direction_with_most_room(const Vec<D>& c, double dist, Room&& room) {
+  constexpr int kDirections = D == 2 ? 720 : 2048;
+  Vec<D> best = spread_direction<D>(0, kDirections);
+  double best_room = room(Vec<D>(c + dist * best));
+  for (int k = 1; k < kDirections; ++k) {
+    const Vec<D> u = spread_direction<D>(k, kDirections);
+    const double g = room(Vec<D>(c + dist * u));
+    if (g > best_room) best_room = g, best = u;
+  }
+  for (double step = D == 2 ? 2 * kPi / kDirections : 0.08; step > 1e-7; step *= 0.5) {
+    for (bool improved = true; improved;) {
+      improved = false;
+      // Tangent directions at `best`: rotate by +-step in each.
+      Vec<D> t1, t2;
+      if constexpr (D == 2) {
+        t1 = Vec2(-best.y(), best.x());
+        t2 = t1;
+      } else {
+        t1 = (std::abs(best.x()) < 0.6 ? Vec3::UnitX() : Vec3::UnitY()).cross(best).normalized();
+        t2 = best.cross(t1);
+      }
+      for (const Vec<D>& t : {t1, Vec<D>(-t1), t2, Vec<D>(-t2)}) {
+        const Vec<D> u = (std::cos(step) * best + std::sin(step) * t).normalized();
+        const double g = room(Vec<D>(c + dist * u));
+        if (g > best_room) {
+          best_room = g;
+          best = u;
+          improved = true;
+        }
+      }
+    }
+  }
+  return best;
+}
+
 /// Points of spacing ~h (coarsened by 1.26x until there are at most `max_points`) centred in a
 /// box: where a front that ran empty looks for voids. Calls f(flat index, point) for each.
 template <int D, class F>

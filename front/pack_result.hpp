@@ -26,6 +26,7 @@ struct FrontCounters {
   std::uint64_t max_neighbours = 0;       ///< largest |V| seen (bounded by r_max/r_min, paper 002 Sect. 6)
   std::uint64_t voids_reopened = 0;       ///< voids found after F ran empty, growth resumed from their surroundings
   std::uint64_t voids_seeded = 0;         ///< voids found after F ran empty and given a new seed particle
+  std::uint64_t two_contact_placements = 0;  ///< 3D: particles placed touching only s0 and one body (no pair had a position)
 };
 
 template <int D>
