@@ -12,9 +12,11 @@
 #include "cli/analyze_command.hpp"
 #include "cli/pack_command.hpp"
 #include "cli/validate_command.hpp"
+#include "core/io/temp_file_registry.hpp"
 #include "frontpack/version.hpp"
 
 int main(int argc, char** argv) {
+  fp::install_temp_file_cleanup();  // Ctrl-C or kill while writing leaves no *.tmp-PID behind
   CLI::App app{"frontpack: dense packings of spheres and disks by the advancing front"};
   app.set_version_flag("--version", std::string("frontpack ") + fp::kVersion);
   app.require_subcommand(1);

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/io/atomic_file.hpp"
 #include "core/io/output_format.hpp"
 #include "core/io/packing_writers.hpp"
 #include "core/io/run_record.hpp"
@@ -108,8 +109,12 @@ int run(const Scene& scene, const PackCommandOptions& o) {
   rec.info = {{"stop_reason", to_string(res.stop)}, {"validation", vr.ok ? "ok" : "FAILED"}};
 
   const auto t_write = Clock::now();
-  for (const OutputSpec& out : scene.outputs) write_packing<D>(parse_output_format(out.format), out.path, P, rec);
-  if (!o.record_path.empty()) write_run_record(o.record_path, rec);
+  {
+    AtomicFileGroup all_or_nothing;  // every output and the record, or none of them
+    for (const OutputSpec& out : scene.outputs) write_packing<D>(parse_output_format(out.format), out.path, P, rec);
+    if (!o.record_path.empty()) write_run_record(o.record_path, rec);
+    all_or_nothing.commit();
+  }
   const double write_seconds = since(t_write);
 
   if (!o.quiet) {

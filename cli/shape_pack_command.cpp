@@ -9,6 +9,7 @@
 #include "cli/progress_line.hpp"
 #include "cli/run_record_start.hpp"
 #include "contact/shape_validation.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/io/output_format.hpp"
 #include "core/io/run_record.hpp"
 #include "front/pack_shapes_scene.hpp"
@@ -79,8 +80,12 @@ int run_shape_pack(const Scene& scene, const PackCommandOptions& o) {
               {"minimisation_algorithm", scene.packer.minimisation.algorithm}};
 
   const auto t_write = Clock::now();
-  for (const OutputSpec& out : scene.outputs) write_shape_packing<D>(parse_output_format(out.format), out.path, P, rec);
-  if (!o.record_path.empty()) write_run_record(o.record_path, rec);
+  {
+    AtomicFileGroup all_or_nothing;  // every output and the record, or none of them
+    for (const OutputSpec& out : scene.outputs) write_shape_packing<D>(parse_output_format(out.format), out.path, P, rec);
+    if (!o.record_path.empty()) write_run_record(o.record_path, rec);
+    all_or_nothing.commit();
+  }
   const double write_seconds = since(t_write);
 
   if (!o.quiet) {
