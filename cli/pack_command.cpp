@@ -1,5 +1,6 @@
 #include "cli/pack_command.hpp"
 
+#include "cli/packing_input.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/run_record_start.hpp"
 #include "cli/shape_pack_command.hpp"
@@ -15,12 +16,14 @@
 
 #include "core/io/atomic_file.hpp"
 #include "core/io/output_format.hpp"
+#include "core/io/output_paths.hpp"
 #include "core/io/packing_writers.hpp"
 #include "core/io/run_record.hpp"
 #include "core/io/scene_yaml.hpp"
 #include "core/io/analysis_json.hpp"
 #include "core/metrics/packing_analysis.hpp"
 #include "front/pack.hpp"
+#include "shapes/io/shape_packing_writers.hpp"
 #include "frontpack/version.hpp"
 
 namespace fp {
@@ -34,8 +37,9 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Applies -o/--format/--seed to the scene and checks every output folder exists before any
-/// work is done, so a bad path costs nothing and creates nothing.
+/// Applies -o/--format/--seed to the scene and checks every file the run will write (outputs,
+/// their side files, the record) before any work is done, so a bad path costs nothing and
+/// creates nothing, and no output replaces another or an input.
 void apply_overrides(Scene& scene, const PackCommandOptions& o) {
   if (o.seed) scene.seed = *o.seed;
   if (!o.format.empty() && o.output_path.empty()) throw InputError("--format needs -o PATH");
@@ -50,17 +54,17 @@ void apply_overrides(Scene& scene, const PackCommandOptions& o) {
     }
     scene.outputs = {out};
   }
-  std::vector<std::string> paths;
-  for (const OutputSpec& out : scene.outputs) paths.push_back(out.path);
-  if (!o.record_path.empty()) paths.push_back(o.record_path);
-  for (const std::string& p : paths) {
-    const std::filesystem::path parent = std::filesystem::path(p).parent_path();
-    if (!parent.empty() && !std::filesystem::is_directory(parent))
-      throw InputError("output folder '" + parent.string() + "' does not exist (for output '" + p + "')");
-    if (std::filesystem::is_directory(p)) throw InputError("output path '" + p + "' is a folder");
+  std::vector<NamedPath> writes;
+  for (const OutputSpec& out : scene.outputs) {
+    const std::string where = out.spot.file.empty() ? "option -o" : out.spot.describe();
+    writes.push_back({out.path, where, "output"});
+    if (!scene.particle_templates.empty())  // shape packings write a side file for vtu and lammps
+      for (const std::string& side : companion_paths(parse_output_format(out.format), out.path))
+        writes.push_back({side, where, "the side file of output '" + out.path + "'"});
   }
+  if (!o.record_path.empty()) writes.push_back({o.record_path, "option --record", "run record"});
+  check_output_paths(writes, scene_reads(scene, "argument SCENE"));
 }
-
 
 template <int D>
 int run(const Scene& scene, const PackCommandOptions& o) {
@@ -149,6 +153,9 @@ int run_pack_command(const PackCommandOptions& o) {
     std::fprintf(stderr, "frontpack: error: %s\n", e.what());
     return 2;
   } catch (const InputError& e) {
+    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
+    return 2;
+  } catch (const OutputPathError& e) {
     std::fprintf(stderr, "frontpack: error: %s\n", e.what());
     return 2;
   }

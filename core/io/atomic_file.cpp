@@ -22,24 +22,24 @@ std::string folder_of(const std::string& path) {
   return parent.empty() ? std::string(".") : parent.string();
 }
 
-/// A symbolic link is written through (like `>` in a shell): its target is replaced.
-std::string write_target(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_symlink(path, ec)) return path;
-  const std::filesystem::path resolved = std::filesystem::canonical(path, ec);
-  return ec ? path : resolved.string();  // a dangling link is replaced by the file
-}
-
 [[noreturn]] void fail(const std::string& path, const std::string& why) {
   throw std::runtime_error("cannot write '" + path + "': " + why);
 }
 
 }  // namespace
 
+// A symbolic link is written through (like `>` in a shell): its target is replaced.
+std::string atomic_write_target(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_symlink(path, ec)) return path;
+  const std::filesystem::path resolved = std::filesystem::canonical(path, ec);
+  return ec ? path : resolved.string();  // a dangling link is replaced by the file
+}
+
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   if (path_.empty()) fail(path_, "empty file name");
   if (path_.find('\0') != std::string::npos) fail(path_, "the file name contains a NUL byte");
-  target_ = write_target(path_);
+  target_ = atomic_write_target(path_);
   const std::string folder = folder_of(target_);
   std::error_code ec;
   const auto status = std::filesystem::status(folder, ec);

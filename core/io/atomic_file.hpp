@@ -79,6 +79,12 @@ class AtomicFileGroup {
   bool done_ = false;
 };
 
+/// Longest suffix of a temporary's name: ".tmp-" and a pid (at most 10 digits).
+inline constexpr std::size_t kAtomicTempSuffixMax = 15;
+
+/// The file AtomicFile(path) replaces: `path`, or the file a symbolic link `path` points to.
+std::string atomic_write_target(const std::string& path);
+
 /// Runs `body` on the stream of an AtomicFile for `path` and commits. If `body` throws, the
 /// temporary is removed and the exception propagates; the target is untouched.
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& body);

@@ -84,6 +84,7 @@ std::string shown(const YAML::Node& n) {
 struct Context {
   std::string file;
   std::filesystem::path folder;  // of the scene file: relative mesh paths start here
+  std::vector<std::string>* read_files = nullptr;  // Scene::read_files: the mesh is added
 
   [[noreturn]] void fail(const YAML::Mark& m, const std::string& key, const std::string& message) const {
     const bool known = !m.is_null() && m.line >= 0;
@@ -352,6 +353,7 @@ ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx) {
   const Value file = m.get("file", "an STL, OFF or OBJ surface, relative to the scene file's folder");
   const std::string name = file.string();
   if (name.empty()) file.fail("must name a file");
+  if (name.find('\0') != std::string::npos) file.fail("the file name contains a NUL byte");
   const std::filesystem::path p(name);
   const std::string resolved = (p.is_absolute() ? p : (ctx.folder / p)).lexically_normal().string();
   {
@@ -366,6 +368,7 @@ ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx) {
   }
   double scale = 1.0;
   if (auto s = m.find("scale")) scale = s->positive();
+  if (ctx.read_files) ctx.read_files->push_back(resolved);
   return construct(m, [&]() -> ContainerPtr<3> { return MeshContainer::from_file(resolved, scale); });
 }
 
@@ -582,6 +585,8 @@ std::vector<OutputSpec> parse_outputs(const Value& v) {
     OutputSpec spec;
     spec.path = path.string();
     if (spec.path.empty()) path.fail("must not be empty");
+    if (spec.path.find('\0') != std::string::npos) path.fail("the path contains a NUL byte");
+    spec.spot = path.spot();
     if (auto f = m.find("format")) {
       const std::string name = f->string();
       try {
@@ -807,6 +812,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
   Scene scene;
   scene.source_path = source_name;
   scene.source_text = text;
+  ctx.read_files = &scene.read_files;
   try {
     const Map root(ctx, doc, "", doc.Mark().is_null() ? start : doc.Mark());
     root.check_known({"dimension", "seed", "container", "particles", "packer", "stop", "output"});
@@ -835,7 +841,9 @@ Scene load_scene(const std::string& path) {
     throw SceneError(path, 0, 0, "", std::string("cannot read the scene file") + (err ? std::string(": ") + std::strerror(err) : ""));
   }
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return parse_scene(text, path);
+  Scene scene = parse_scene(text, path);
+  scene.read_files.insert(scene.read_files.begin(), path);
+  return scene;
 }
 
 }  // namespace fp

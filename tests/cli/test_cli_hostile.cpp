@@ -5,11 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <functional>
 #include <map>
 #include <regex>
 #include <thread>
@@ -33,6 +36,7 @@ std::map<std::string, std::string> snapshot(const fs::path& dir) {
     const std::string name = fs::relative(e.path(), dir).string();
     if (e.is_symlink()) s[name] = "-> " + fs::read_symlink(e.path()).string();
     else if (e.is_directory()) s[name] = "<folder>";
+    else if (!e.is_regular_file()) s[name] = "<special>";  // a FIFO would block a read
     else s[name] = read_bytes(e.path());
   }
   return s;
@@ -51,10 +55,9 @@ std::string differences(const std::map<std::string, std::string>& before, const 
   return out;
 }
 
-// ---- a run killed while it writes --------------------------------------------------------
-
-/// Starts frontpack in dir.work() with stdout/stderr to the capture folder; returns its pid.
-pid_t spawn_frontpack(const TempDir& dir, const std::vector<std::string>& args) {
+/// Starts frontpack in dir.work() with stdout/stderr to the capture folder, and with a file
+/// size limit (RLIMIT_FSIZE, bytes) if one is given; returns its pid.
+pid_t spawn_frontpack(const TempDir& dir, const std::vector<std::string>& args, rlim_t file_size_limit = 0) {
   const std::string out = (dir.capture() / "stdout").string(), err = (dir.capture() / "stderr").string();
   const std::string binary = frontpack_binary(), work = dir.work().string();
   std::vector<std::string> argv_s = {binary};
@@ -67,6 +70,10 @@ pid_t spawn_frontpack(const TempDir& dir, const std::vector<std::string>& args) 
     const int o = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     const int e = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (o < 0 || e < 0 || chdir(work.c_str()) != 0) _exit(127);
+    if (file_size_limit > 0) {
+      const rlimit limit{file_size_limit, file_size_limit};
+      if (setrlimit(RLIMIT_FSIZE, &limit) != 0) _exit(127);
+    }
     dup2(o, 1);
     dup2(e, 2);
     std::vector<char*> argv;
@@ -77,6 +84,236 @@ pid_t spawn_frontpack(const TempDir& dir, const std::vector<std::string>& args) 
   }
   return pid;
 }
+
+// ---- the refusal checks ------------------------------------------------------------------
+
+/// Runs `frontpack <args>` in a folder prepared by `setup`, and checks the refusal: exit code,
+/// every `mention` in stderr, no summary, under 2 s, and the folder byte for byte as before.
+template <typename Setup>
+void expect_refused(Setup setup, const std::string& args, int exit_code, const std::vector<std::string>& mention) {
+  TempDir dir;
+  setup(dir.work());
+  const auto before = snapshot(dir.work());
+  const auto t0 = Clock::now();
+  const RunResult r = run_frontpack(dir, args);
+  const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  EXPECT_EQ(r.exit_code, exit_code) << "(-1: killed by a signal) stderr: " << r.err;
+  for (const std::string& m : mention) EXPECT_NE(r.err.find(m), std::string::npos) << "'" << m << "' not in: " << r.err;
+  for (const char* internal : {"std::", "filesystem_error", "bad_alloc", "YAML::", "CGAL", "terminate called"})
+    EXPECT_EQ(r.err.find(internal), std::string::npos) << "internal name in: " << r.err;
+  EXPECT_EQ(r.out, "") << "no summary for a refused run";
+  EXPECT_LT(seconds, 2.0);
+  const auto after = snapshot(dir.work());
+  EXPECT_TRUE(after == before) << differences(before, after);
+}
+
+/// A folder holding the scene `s.yaml` (kScene + `extra`) and whatever `more` adds.
+auto with_scene(const std::string& extra = "", std::function<void(const fs::path&)> more = {}) {
+  return [=](const fs::path& w) {
+    write_bytes(w / "s.yaml", kScene + extra);
+    write_bytes(w / "old.csv", "an existing output, not to be touched\n");
+    if (more) more(w);
+  };
+}
+
+const std::string kCapsules =
+    "dimension: 3\n"
+    "container: {type: box, min: [0, 0, 0], max: [1, 1, 1]}\n"
+    "particles:\n  - {shape: spherocylinder, aspect_ratio: 0.5, size: {distribution: uniform, min: 0.1, max: 0.2}}\n";
+const std::string kBallShapes =
+    "dimension: 3\n"
+    "container: {type: box, min: [0, 0, 0], max: [1, 1, 1]}\n"
+    "particles:\n  - {shape: sphere, size: {distribution: uniform, min: 0.1, max: 0.2}}\n";
+
+TEST(CliHostileOutputs, OutputIsTheScene) {
+  expect_refused(with_scene(), "pack s.yaml -o s.yaml --format csv", 2, {"'s.yaml'", "scene file", "option -o"});
+}
+
+TEST(CliHostileOutputs, OutputIsTheSceneThroughDotDot) {
+  expect_refused(with_scene("", [](const fs::path& w) { fs::create_directory(w / "sub"); }),
+                 "pack s.yaml -o sub/../s.yaml --format csv", 2, {"'sub/../s.yaml'", "scene file"});
+}
+
+TEST(CliHostileOutputs, OutputIsTheSceneThroughASymbolicLink) {
+  expect_refused(with_scene("", [](const fs::path& w) { fs::create_symlink("s.yaml", w / "link.csv"); }),
+                 "pack s.yaml -o link.csv", 2, {"'link.csv'", "scene file"});
+}
+
+TEST(CliHostileOutputs, OutputIsTheSceneThroughAHardLink) {
+  expect_refused(with_scene("", [](const fs::path& w) { fs::create_hard_link(w / "s.yaml", w / "hard.csv"); }),
+                 "pack s.yaml -o hard.csv", 2, {"'hard.csv'", "scene file"});
+}
+
+TEST(CliHostileOutputs, SceneOutputListNamesTheScene) {
+  expect_refused(with_scene("output:\n  - {path: old.csv}\n  - {format: csv, path: ./s.yaml}\n"), "pack s.yaml", 2,
+                 {"s.yaml:6:", "key 'output[1].path'", "'./s.yaml'", "scene file"});
+}
+
+TEST(CliHostileOutputs, OutputIsTheContainerMesh) {
+  const std::string mesh = "dimension: 3\ncontainer: {type: mesh, file: cube.stl}\n"
+                           "particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}\n";
+  expect_refused(
+      [&](const fs::path& w) {
+        write_bytes(w / "m.yaml", mesh);
+        fs::copy_file(source_path("tests/data/meshes/cube.stl"), w / "cube.stl");
+      },
+      "pack m.yaml -o cube.stl --format csv", 2, {"'cube.stl'", "mesh file", "container.file"});
+}
+
+TEST(CliHostileOutputs, TwoOutputsAreTheSameFile) {
+  expect_refused(with_scene("output:\n  - {path: old.csv}\n  - {path: sub/../old.csv}\n",
+                            [](const fs::path& w) { fs::create_directory(w / "sub"); }),
+                 "pack s.yaml", 2, {"s.yaml:6:", "key 'output[1].path'", "same file as output 'old.csv'"});
+}
+
+TEST(CliHostileOutputs, TwoNewOutputsAreTheSameFile) {
+  expect_refused(with_scene("output:\n  - {path: new.csv}\n  - {format: yade, path: ./new.csv}\n"), "pack s.yaml", 2,
+                 {"s.yaml:6:", "'./new.csv'", "same file as output 'new.csv'"});
+}
+
+TEST(CliHostileOutputs, RecordIsAnOutput) {
+  expect_refused(with_scene(), "pack s.yaml -o old.csv --record ./old.csv", 2, {"option --record", "'./old.csv'", "same file"});
+}
+
+TEST(CliHostileOutputs, OutputIsTheSurfacesSideFileOfAnother) {
+  expect_refused(
+      [](const fs::path& w) {
+        write_bytes(w / "c.yaml", kCapsules + "output:\n  - {path: c.vtu}\n  - {path: c.surfaces.vtu}\n");
+      },
+      "pack c.yaml", 2, {"c.yaml:6:", "'c.surfaces.vtu'", "side file of output 'c.vtu'"});
+}
+
+TEST(CliHostileOutputs, OutputIsTheMultisphereSideFileOfAnother) {
+  expect_refused(
+      [](const fs::path& w) {
+        write_bytes(w / "b.yaml", kBallShapes + "output:\n  - {path: b.multisphere.txt}\n  - {path: b.data}\n");
+      },
+      "pack b.yaml", 2, {"b.yaml:6:", "'b.multisphere.txt'", "side file of output 'b.data'"});
+}
+
+TEST(CliHostileOutputs, RecordIsASideFile) {
+  expect_refused([](const fs::path& w) { write_bytes(w / "c.yaml", kCapsules); }, "pack c.yaml -o c.vtu --record c.surfaces.vtu",
+                 2, {"option --record", "'c.surfaces.vtu'", "side file of output 'c.vtu'"});
+}
+
+TEST(CliHostileOutputs, SideFileIsTheScene) {
+  expect_refused([](const fs::path& w) { write_bytes(w / "c.surfaces.vtu", kCapsules); }, "pack c.surfaces.vtu -o c.vtu", 2,
+                 {"'c.surfaces.vtu'", "side file", "scene file"});
+}
+
+TEST(CliHostileOutputs, NulByteInAnOutputPath) {
+  expect_refused(with_scene("output:\n  - {path: \"a\\0b.csv\"}\n"), "pack s.yaml", 2,
+                 {"s.yaml:5:", "key 'output[0].path'", "NUL"});
+}
+
+TEST(CliHostileOutputs, NulByteInTheMeshPath) {
+  const std::string mesh = "dimension: 3\ncontainer: {type: mesh, file: \"cube.stl\\0.off\"}\n"
+                           "particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}\n";
+  expect_refused(
+      [&](const fs::path& w) {
+        write_bytes(w / "m.yaml", mesh);
+        fs::copy_file(source_path("tests/data/meshes/cube.stl"), w / "cube.stl");
+      },
+      "pack m.yaml -o out.csv", 2, {"m.yaml:2:", "key 'container.file'", "NUL"});
+}
+
+TEST(CliHostileOutputs, FileNameLongerThanNameMax) {
+  const std::string name = std::string(300, 'x') + ".csv";
+  expect_refused(with_scene(), "pack s.yaml -o " + name, 2, {"'" + name + "'", "NAME_MAX"});
+}
+
+TEST(CliHostileOutputs, FileNameThatLeavesNoRoomForTheTemporary) {
+  const std::string name = std::string(246, 'x') + ".csv";  // 250 bytes: legal, but "<name>.tmp-<pid>" is not
+  expect_refused(with_scene(), "pack s.yaml -o " + name, 2, {"'" + name + "'", "temporary"});
+}
+
+TEST(CliHostileOutputs, FolderNameLongerThanNameMax) {
+  const std::string name = std::string(300, 'd') + "/a.csv";
+  expect_refused(with_scene(), "pack s.yaml -o " + name, 2, {"'" + name + "'", "folder name", "NAME_MAX"});
+}
+
+TEST(CliHostileOutputs, PathLongerThanPathMax) {
+  std::string name;
+  while (name.size() < 4200) name += "d/";
+  name += "a.csv";
+  expect_refused(with_scene(), "pack s.yaml -o " + name, 2, {"PATH_MAX"});
+}
+
+TEST(CliHostileOutputs, RecordNameLongerThanNameMax) {
+  const std::string name = std::string(300, 'r') + ".json";
+  expect_refused(with_scene(), "pack s.yaml -o a.csv --record " + name, 2, {"option --record", "NAME_MAX"});
+}
+
+TEST(CliHostileOutputs, OutputFolderNotWritable) {
+  if (access("/proc/self", W_OK) == 0) GTEST_SKIP() << "/proc/self is writable here";
+  expect_refused(with_scene(), "pack s.yaml -o old.csv --record /proc/self/r.json", 2, {"'/proc/self'", "not writable"});
+}
+
+TEST(CliHostileOutputs, OutputIsNotARegularFile) {
+  expect_refused(with_scene("", [](const fs::path& w) { ASSERT_EQ(mkfifo((w / "fifo.csv").c_str(), 0644), 0); }),
+                 "pack s.yaml -o fifo.csv", 2, {"'fifo.csv'", "not a regular file"});
+}
+
+TEST(CliHostileOutputs, OutputInAFileInsteadOfAFolder) {
+  expect_refused(with_scene(), "pack s.yaml -o old.csv/a.csv", 2, {"'old.csv'", "not a folder"});
+}
+
+TEST(CliHostileOutputs, AnalyzeJsonIsThePacking) {
+  expect_refused([](const fs::path& w) { write_bytes(w / "g.csv", "id,x,y,z,r\n0,0.5,0.5,0.5,0.1\n1,0.8,0.5,0.5,0.1\n"); },
+                 "analyze g.csv --json g.csv", 2, {"option --json", "'g.csv'", "packing file"});
+}
+
+TEST(CliHostileOutputs, AnalyzeJsonIsTheScene) {
+  expect_refused(with_scene("", [](const fs::path& w) {
+                   write_bytes(w / "g.csv", "id,x,y,z,r\n0,0.05,0.05,0.05,0.015\n");
+                 }),
+                 "analyze g.csv --scene s.yaml --json ./s.yaml", 2, {"option --json", "'./s.yaml'", "scene file"});
+}
+
+TEST(CliHostileOutputs, AnalyzePlotWouldReplaceThePacking) {
+  expect_refused(
+      [](const fs::path& w) {
+        fs::create_directory(w / "figs");
+        write_bytes(w / "figs" / "rdf.png", "id,x,y,z,r\n0,0.5,0.5,0.5,0.1\n1,0.8,0.5,0.5,0.1\n");
+      },
+      "analyze figs/rdf.png --format csv --plots figs", 2, {"option --plots", "'figs/rdf.png'", "packing file"});
+}
+
+TEST(CliHostileOutputs, AnalyzeJsonIsAPlot) {
+  expect_refused(
+      [](const fs::path& w) {
+        fs::create_directory(w / "figs");
+        write_bytes(w / "g.csv", "id,x,y,z,r\n0,0.5,0.5,0.5,0.1\n1,0.8,0.5,0.5,0.1\n");
+      },
+      "analyze g.csv --plots figs --json figs/vf_curve.png", 2, {"option --plots", "same file as analysis JSON"});
+}
+
+// ---- several outputs, one of which cannot be written -------------------------------------
+
+// The second output passes the file-size limit (what a full disk does); the first one, complete
+// by then, must not replace the existing file either: all or nothing.
+TEST(CliHostileOutputs, OutputSetIsAllOrNothing) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml",
+              "dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [1, 1, 1]}\n"
+              "particles: {radius: {distribution: uniform, min: 0.02, max: 0.04}}\nstop: {particles: 2000}\n"
+              "output:\n  - {path: o.vtu}\n  - {path: o.data}\n");
+  write_bytes(dir.work() / "o.vtu", "an older packing\n");
+  const auto before = snapshot(dir.work());
+  // vtu: 57 bytes per particle, lammps: about 90.
+  const pid_t pid = spawn_frontpack(dir, {"pack", "s.yaml", "-q", "--record", "o.record.json"}, 150 * 1000);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  const std::string err = read_bytes(dir.capture() / "stderr");
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 1) << err;
+  EXPECT_NE(err.find("'o.data'"), std::string::npos) << err;
+  EXPECT_NE(err.find("write error"), std::string::npos) << err;
+  const auto after = snapshot(dir.work());
+  EXPECT_TRUE(after == before) << differences(before, after);
+}
+
+// ---- a run killed while it writes --------------------------------------------------------
 
 bool has_temporary(const fs::path& dir) {
   std::error_code ec;
