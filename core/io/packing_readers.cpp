@@ -13,12 +13,15 @@
 #include <string_view>
 #include <vector>
 
+#include "core/io/input_file.hpp"
 #include "core/io/run_record.hpp"
 
 namespace fp {
 namespace {
 
 std::string read_whole_file(const std::string& path) {
+  if (const std::string problem = input_file_problem(path); !problem.empty())
+    throw std::runtime_error("packing file '" + path + "' " + problem);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot open '" + path + "' for reading");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

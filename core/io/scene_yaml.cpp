@@ -22,6 +22,7 @@
 #include "core/geometry/cylinder_container.hpp"
 #include "core/geometry/mesh_container.hpp"
 #include "core/geometry/polygon_container.hpp"
+#include "core/io/input_file.hpp"
 #include "core/io/output_format.hpp"
 #include "core/sampling/constant_radius.hpp"
 #include "core/sampling/discrete_radius.hpp"
@@ -356,6 +357,8 @@ ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx) {
   if (name.find('\0') != std::string::npos) file.fail("the file name contains a NUL byte");
   const std::filesystem::path p(name);
   const std::string resolved = (p.is_absolute() ? p : (ctx.folder / p)).lexically_normal().string();
+  if (const std::string problem = input_file_problem(resolved); !problem.empty())
+    file.fail("mesh file '" + resolved + "' " + problem);
   {
     std::ifstream probe(resolved, std::ios::binary);
     if (!probe || std::filesystem::is_directory(resolved)) {
@@ -835,12 +838,20 @@ Scene load_scene(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw SceneError(path, 0, 0, "", "is a folder; give the scene file (YAML) itself, e.g. scenes/demo.yaml");
+  const std::string problem = input_file_problem(path);
+  if (!problem.empty()) throw SceneError(path, 0, 0, "", "the scene file " + problem);
+  const std::string limit = "scene files are limited to " + std::to_string(kMaxSceneBytes >> 20) + " MiB";
+  if (const auto size = std::filesystem::file_size(path, ec); !ec && size > kMaxSceneBytes)
+    throw SceneError(path, 0, 0, "", "the scene file is " + std::to_string(size) + " bytes; " + limit);
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     const int err = errno;
     throw SceneError(path, 0, 0, "", std::string("cannot read the scene file") + (err ? std::string(": ") + std::strerror(err) : ""));
   }
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text(kMaxSceneBytes + 1, '\0');  // no more than the cap, even if the file grows meanwhile
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxSceneBytes) throw SceneError(path, 0, 0, "", "the scene file grew while it was read; " + limit);
   Scene scene = parse_scene(text, path);
   scene.read_files.insert(scene.read_files.begin(), path);
   return scene;

@@ -288,6 +288,47 @@ TEST(CliHostileOutputs, AnalyzeJsonIsAPlot) {
       "analyze g.csv --plots figs --json figs/vf_curve.png", 2, {"option --plots", "same file as analysis JSON"});
 }
 
+// ---- inputs that are not scene files ----------------------------------------------------
+
+TEST(CliHostileInputs, SceneIsDevZero) {
+  expect_refused([](const fs::path&) {}, "pack /dev/zero -o a.csv", 2, {"/dev/zero", "not a regular file"});
+}
+
+TEST(CliHostileInputs, SceneIsAPipe) {
+  expect_refused([](const fs::path& w) { ASSERT_EQ(mkfifo((w / "s.yaml").c_str(), 0644), 0); }, "pack s.yaml -o a.csv", 2,
+                 {"s.yaml", "not a regular file"});
+}
+
+// 100 MB under an unknown key: yaml-cpp would build the list for over a minute, then run out
+// of memory; the size cap refuses it before reading.
+TEST(CliHostileInputs, SceneOfHundredMegabytes) {
+  expect_refused(
+      [](const fs::path& w) {
+        std::string text = kScene + "junk: [";
+        text.reserve(100u << 20);
+        while (text.size() < (100u << 20)) text += "1, ";
+        write_bytes(w / "s.yaml", text + "1]\n");
+      },
+      "pack s.yaml -o a.csv", 2, {"s.yaml", "limited to 4 MiB"});
+}
+
+TEST(CliHostileInputs, MeshIsDevZero) {
+  expect_refused(with_scene("", [](const fs::path& w) {
+                   write_bytes(w / "m.yaml", "dimension: 3\ncontainer: {type: mesh, file: /dev/zero}\n"
+                                             "particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}\n");
+                 }),
+                 "pack m.yaml -o a.csv", 2, {"m.yaml:2:", "key 'container.file'", "/dev/zero", "not a regular file"});
+}
+
+TEST(CliHostileInputs, AnalyzedPackingIsDevZero) {
+  expect_refused([](const fs::path&) {}, "analyze /dev/zero --format csv", 2, {"/dev/zero", "not a regular file"});
+}
+
+TEST(CliHostileInputs, ValidatedPackingIsAPipe) {
+  expect_refused(with_scene("", [](const fs::path& w) { ASSERT_EQ(mkfifo((w / "p.csv").c_str(), 0644), 0); }),
+                 "validate p.csv --scene s.yaml", 2, {"p.csv", "not a regular file"});
+}
+
 // ---- several outputs, one of which cannot be written -------------------------------------
 
 // The second output passes the file-size limit (what a full disk does); the first one, complete
