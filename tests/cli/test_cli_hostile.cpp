@@ -329,6 +329,33 @@ TEST(CliHostileInputs, ValidatedPackingIsAPipe) {
                  "validate p.csv --scene s.yaml", 2, {"p.csv", "not a regular file"});
 }
 
+// ---- seeds ---------------------------------------------------------------------------------
+
+TEST(CliHostileSeeds, SeedBeyondTwoToTheSixtyFour) {
+  expect_refused(with_scene(), "pack s.yaml -o a.csv --seed 18446744073709551616", 2, {"--seed", "2^64-1"});
+  expect_refused(with_scene(), "pack s.yaml -o a.csv --seed 99999999999999999999999", 2, {"--seed", "2^64-1"});
+}
+
+TEST(CliHostileSeeds, HexadecimalSeedRefusedOnTheCommandLineAndInTheScene) {
+  expect_refused(with_scene(), "pack s.yaml -o a.csv --seed 0x10", 2, {"--seed", "decimal", "0x10"});
+  expect_refused(with_scene("seed: 0x10\n"), "pack s.yaml -o a.csv", 2, {"s.yaml:4:", "key 'seed'"});
+}
+
+TEST(CliHostileSeeds, LeadingZerosAreDecimalOnTheCommandLineAndInTheScene) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", kScene);
+  write_bytes(dir.work() / "z.yaml", kScene + "seed: 042\n");
+  ASSERT_EQ(run_frontpack(dir, "pack s.yaml -q --seed 042 -o a.csv --record a.json").exit_code, 0);
+  ASSERT_EQ(run_frontpack(dir, "pack s.yaml -q --seed 42 -o b.csv").exit_code, 0);
+  ASSERT_EQ(run_frontpack(dir, "pack z.yaml -q -o c.csv --record c.json").exit_code, 0);
+  ASSERT_EQ(run_frontpack(dir, "pack s.yaml -q --seed 34 -o octal.csv").exit_code, 0);
+  EXPECT_NE(read_bytes(dir.work() / "a.json").find("\"seed\": 42,"), std::string::npos);
+  EXPECT_NE(read_bytes(dir.work() / "c.json").find("\"seed\": 42,"), std::string::npos);
+  EXPECT_EQ(read_bytes(dir.work() / "a.csv"), read_bytes(dir.work() / "b.csv"));
+  EXPECT_EQ(read_bytes(dir.work() / "c.csv"), read_bytes(dir.work() / "b.csv"));
+  EXPECT_NE(read_bytes(dir.work() / "octal.csv"), read_bytes(dir.work() / "b.csv")) << "seeds 34 and 42 must differ";
+}
+
 // ---- several outputs, one of which cannot be written -------------------------------------
 
 // The second output passes the file-size limit (what a full disk does); the first one, complete
