@@ -1,8 +1,8 @@
-// CGAL translation unit 1 of 2: reading polygon soups from OFF / OBJ / STL files.
-// Kept apart from the spatial queries (mesh_cgal.cpp) so the two heavy TUs build in parallel.
+// CGAL translation unit 1 of 2: reading polygon soups from OBJ / STL files (OFF has its own
+// strict reader, off_reader.hpp). Kept apart from the spatial queries (mesh_cgal.cpp) so the
+// two heavy TUs build in parallel.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OBJ.h>
-#include <CGAL/IO/OFF.h>
 #include <CGAL/IO/STL.h>
 
 #include <algorithm>
@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "core/geometry/mesh_cgal.hpp"
+#include "core/geometry/off_reader.hpp"
 
 namespace fp::detail {
 
@@ -30,7 +31,7 @@ bool read_polygon_soup(const std::string& path, PolygonSoup& soup, std::string& 
   std::vector<std::vector<std::size_t>> polygons;
   bool ok = false;
   if (ext == "off") {
-    ok = CGAL::IO::read_OFF(path, points, polygons);
+    return read_off(path, soup, error);
   } else if (ext == "obj") {
     ok = CGAL::IO::read_OBJ(path, points, polygons);
   } else if (ext == "stl") {

@@ -329,6 +329,41 @@ TEST(CliHostileInputs, ValidatedPackingIsAPipe) {
                  "validate p.csv --scene s.yaml", 2, {"p.csv", "not a regular file"});
 }
 
+// ---- meshes --------------------------------------------------------------------------------
+
+const std::string kCubeVertices = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n";
+const std::string kCubeFaces = "3 0 3 2\n3 0 2 1\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n"
+                               "3 4 5 6\n3 4 6 7\n";
+
+/// A folder with m.yaml filling the mesh `file`, written with `text` (or copied from tests/data/meshes).
+auto with_mesh(const std::string& file, const std::string& text) {
+  return [=](const fs::path& w) {
+    write_bytes(w / "m.yaml", "dimension: 3\ncontainer: {type: mesh, file: " + file +
+                                  "}\nparticles: {radius: {distribution: uniform, min: 0.1, max: 0.2}}\n");
+    if (text.empty()) fs::copy_file(source_path("tests/data/meshes/" + file), w / file);
+    else write_bytes(w / file, text);
+  };
+}
+
+TEST(CliHostileMeshes, OffVertexLineWithAnExtraNumber) {
+  std::string v = kCubeVertices;
+  v.replace(v.find("1 1 0\n"), 6, "1 1 0 5\n");
+  expect_refused(with_mesh("c.off", "OFF\n8 12 0\n" + v + kCubeFaces), "pack m.yaml -o a.csv", 2,
+                 {"m.yaml:2:", "'c.off'", "line 5:", "vertex 2 has 4 numbers"});
+}
+
+TEST(CliHostileMeshes, OffHeaderClaimingTwoBillionVertices) {
+  expect_refused(with_mesh("c.off", "OFF\n2000000000 12 0\n" + kCubeVertices + kCubeFaces), "pack m.yaml -o a.csv", 2,
+                 {"'c.off'", "line 2:", "2000000000 vertices"});
+}
+
+TEST(CliHostileMeshes, TheCubeItselfIsAccepted) {  // the cases above differ from it by one token
+  TempDir dir;
+  with_mesh("c.off", "OFF\n8 12 0\n" + kCubeVertices + kCubeFaces)(dir.work());
+  const RunResult r = run_frontpack(dir, "pack m.yaml -q -o a.csv");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
 // ---- seeds ---------------------------------------------------------------------------------
 
 TEST(CliHostileSeeds, SeedBeyondTwoToTheSixtyFour) {
