@@ -357,6 +357,16 @@ TEST(CliHostileMeshes, OffHeaderClaimingTwoBillionVertices) {
                  {"'c.off'", "line 2:", "2000000000 vertices"});
 }
 
+TEST(CliHostileMeshes, SelfIntersectingMesh) {
+  expect_refused(with_mesh("self_intersecting.off", ""), "pack m.yaml -o a.csv", 2,
+                 {"m.yaml:2:", "key 'container'", "'self_intersecting.off'", "intersects itself"});
+}
+
+TEST(CliHostileMeshes, TwoClosedMeshesThatOverlap) {
+  expect_refused(with_mesh("overlapping_cubes.off", ""), "pack m.yaml -o a.csv", 2,
+                 {"m.yaml:2:", "'overlapping_cubes.off'", "intersects itself"});
+}
+
 TEST(CliHostileMeshes, TheCubeItselfIsAccepted) {  // the cases above differ from it by one token
   TempDir dir;
   with_mesh("c.off", "OFF\n8 12 0\n" + kCubeVertices + kCubeFaces)(dir.work());
