@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cli/failure_report.hpp"
 #include "cli/packing_input.hpp"
 #include "core/io/analysis_json.hpp"
 #include "core/io/atomic_file.hpp"
@@ -87,7 +88,8 @@ class PlotWorkFolder {
 /// when every one was drawn; returns an empty string on success, else what went wrong.
 std::string draw_plots(const AnalyzeCommandOptions& o, const std::string& json_text, const std::string& cdf_text) {
   namespace fs = std::filesystem;
-  if (!fs::exists(o.python))
+  std::error_code ec;
+  if (!fs::exists(o.python, ec))
     return o.python + " not found: the plots need Debian's python3 and python3-matplotlib (apt-get install python3-matplotlib)";
   PlotWorkFolder work(o.plots_dir);
   const std::string json_path = work.file("analysis.json"), cdf_path = work.file("radius_cdf.csv");
@@ -105,7 +107,7 @@ std::string draw_plots(const AnalyzeCommandOptions& o, const std::string& json_t
     default: return "the plot script failed (exit " + std::to_string(WEXITSTATUS(status)) + ")";
   }
   for (const std::string& f : drawn)
-    if (!fs::is_regular_file(f)) return "the plot script did not draw " + fs::path(f).filename().string();
+    if (!fs::is_regular_file(f, ec)) return "the plot script did not draw " + fs::path(f).filename().string();
   const CleanupSignalsBlocked hold;  // all figures or none, Ctrl-C included
   std::size_t moved = 0;
   for (; moved < drawn.size(); ++moved) {
@@ -151,6 +153,7 @@ int analyze(const std::optional<Scene>& scene, const Packing<D>& P, const Analyz
 int run_analyze_command(const AnalyzeCommandOptions& o) {
   PackingInput in;
   try {
+    const Activity doing("reading packing '" + o.packing_path + "'");
     std::vector<NamedPath> writes;
     if (!o.json_path.empty()) writes.push_back({o.json_path, "option --json", "analysis JSON"});
     if (!o.plots_dir.empty()) {
@@ -167,15 +170,14 @@ int run_analyze_command(const AnalyzeCommandOptions& o) {
     if (in.scene)
       for (const NamedPath& r : scene_reads(*in.scene, "option --scene")) reads.push_back(r);
     check_output_paths(writes, reads);
-  } catch (const std::exception& e) {  // the scene parser and the readers name file, line and key
-    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-    return 2;
+  } catch (...) {  // the scene parser and the readers name file, line and key
+    return report_failure(2);
   }
   try {
+    const Activity doing("analysing packing '" + o.packing_path + "'");
     return in.dimension == 2 ? analyze<2>(in.scene, in.packing2, o) : analyze<3>(in.scene, in.packing3, o);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-    return 1;
+  } catch (...) {
+    return report_failure(1);
   }
 }
 

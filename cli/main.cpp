@@ -12,13 +12,15 @@
 #include <string>
 
 #include "cli/analyze_command.hpp"
+#include "cli/failure_report.hpp"
 #include "cli/pack_command.hpp"
 #include "cli/validate_command.hpp"
 #include "core/io/temp_file_registry.hpp"
 #include "frontpack/version.hpp"
 
-int main(int argc, char** argv) {
-  fp::install_temp_file_cleanup();  // Ctrl-C or kill while writing leaves no *.tmp-PID behind
+namespace {
+
+int run(int argc, char** argv) {
   CLI::App app{"frontpack: dense packings of spheres and disks by the advancing front"};
   app.set_version_flag("--version", std::string("frontpack ") + fp::kVersion);
   app.require_subcommand(1);
@@ -100,4 +102,15 @@ int main(int argc, char** argv) {
     return fp::run_pack_command(pack);
   }
   return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  fp::install_temp_file_cleanup();  // Ctrl-C or kill while writing leaves no *.tmp-PID behind
+  try {  // the commands report their own failures; this is the net under them
+    return run(argc, argv);
+  } catch (...) {
+    return fp::report_failure(1);
+  }
 }

@@ -1,5 +1,6 @@
 #include "cli/pack_command.hpp"
 
+#include "cli/failure_report.hpp"
 #include "cli/packing_input.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/run_record_start.hpp"
@@ -78,6 +79,7 @@ int run(const Scene& scene, const PackCommandOptions& o) {
   const Packing<D>& P = res.packing;
 
   // Every figure of `frontpack analyze`, from the same code, the independent validation included.
+  const Activity analysing("analysing the packing of '" + scene.source_path + "'");
   const auto t_metrics = Clock::now();
   AnalysisOptions analysis_options;
   analysis_options.contact_tolerance = scene.packer.contact_tolerance;
@@ -114,6 +116,7 @@ int run(const Scene& scene, const PackCommandOptions& o) {
 
   const auto t_write = Clock::now();
   {
+    const Activity writing("writing the outputs of '" + scene.source_path + "'");
     AtomicFileGroup all_or_nothing;  // every output and the record, or none of them
     for (const OutputSpec& out : scene.outputs) write_packing<D>(parse_output_format(out.format), out.path, P, rec);
     if (!o.record_path.empty()) write_run_record(o.record_path, rec);
@@ -146,38 +149,22 @@ int run(const Scene& scene, const PackCommandOptions& o) {
 
 int run_pack_command(const PackCommandOptions& o) {
   Scene scene;
-  try {
+  try {  // reading and checking what was given: any failure is bad input
+    const Activity doing("reading scene '" + o.scene_path + "'");
     scene = load_scene(o.scene_path);
     apply_overrides(scene, o);
-  } catch (const SceneError& e) {
-    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-    return 2;
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-    return 2;
-  } catch (const OutputPathError& e) {
-    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-    return 2;
-  }
-  if (!scene.particle_templates.empty()) {
     // Every shape-specific input problem (family, parameters, output formats) before any work.
-    try {
-      check_shape_scene(scene);
-    } catch (const SceneError& e) {
-      std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-      return 2;
-    } catch (const std::invalid_argument& e) {
-      std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-      return 2;
-    }
+    if (!scene.particle_templates.empty()) check_shape_scene(scene);
+  } catch (...) {
+    return report_failure(2);
   }
   try {
+    const Activity doing("packing scene '" + o.scene_path + "'");
     if (!scene.particle_templates.empty())  // non-spherical particles: the general front
       return scene.dimension == 2 ? run_shape_pack<2>(scene, o) : run_shape_pack<3>(scene, o);
     return scene.dimension == 2 ? run<2>(scene, o) : run<3>(scene, o);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-    return 1;
+  } catch (...) {
+    return report_failure(1);
   }
 }
 

@@ -6,6 +6,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/exceptions.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <limits>
@@ -161,6 +162,14 @@ struct TriangleSurfaceIndex::Impl {
 TriangleSurfaceIndex::TriangleSurfaceIndex(const std::vector<Vec3>& vertices,
                                            const std::vector<std::array<int, 3>>& triangles)
     : impl_(std::make_unique<Impl>()) {
+  try {
+    build(vertices, triangles);
+  } catch (const CGAL::Failure_exception& e) {  // its what() is a page of CGAL internals
+    throw std::invalid_argument("a check of the geometry library failed (" + e.expression() + ")");
+  }
+}
+
+void TriangleSurfaceIndex::build(const std::vector<Vec3>& vertices, const std::vector<std::array<int, 3>>& triangles) {
   Impl& m = *impl_;
   m.mesh.reserve(vertices.size(), 3 * triangles.size() / 2, triangles.size());
   for (const Vec3& v : vertices) m.mesh.add_vertex(to_point(v));
@@ -217,7 +226,11 @@ bool TriangleSurfaceIndex::find_crossing_facets(int& f, int& g) const {
   // Zero-area facets are left out: PMP counts each as an intersection with itself, and they
   // change neither the inside nor the distances (see the constructor).
   std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
-  PMP::self_intersections(impl_->solid_faces, impl_->mesh, std::back_inserter(pairs), CGAL::parameters::maximum_number(1));
+  try {
+    PMP::self_intersections(impl_->solid_faces, impl_->mesh, std::back_inserter(pairs), CGAL::parameters::maximum_number(1));
+  } catch (const CGAL::Failure_exception& e) {
+    throw std::invalid_argument("the self-intersection test failed (" + e.expression() + ")");
+  }
   if (pairs.empty()) return false;
   f = static_cast<int>(pairs.front().first.idx());
   g = static_cast<int>(pairs.front().second.idx());

@@ -45,6 +45,8 @@ class TriangleSurfaceIndex {
   bool find_crossing_facets(int& f, int& g) const;
 
  private:
+  void build(const std::vector<Vec3>& vertices, const std::vector<std::array<int, 3>>& triangles);
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

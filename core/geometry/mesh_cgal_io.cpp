@@ -4,6 +4,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/STL.h>
+#include <CGAL/exceptions.h>
 
 #include <algorithm>
 #include <cctype>
@@ -32,10 +33,14 @@ bool read_polygon_soup(const std::string& path, PolygonSoup& soup, std::string& 
   bool ok = false;
   if (ext == "off") {
     return read_off(path, soup, error);
-  } else if (ext == "obj") {
-    ok = CGAL::IO::read_OBJ(path, points, polygons);
-  } else if (ext == "stl") {
-    ok = CGAL::IO::read_STL(path, points, polygons);  // binary first, then ascii; merges equal points
+  } else if (ext == "obj" || ext == "stl") {
+    try {
+      ok = ext == "obj" ? CGAL::IO::read_OBJ(path, points, polygons)
+                        : CGAL::IO::read_STL(path, points, polygons);  // binary first, then ascii; merges equal points
+    } catch (const CGAL::Failure_exception& e) {  // its what() is a page of CGAL internals
+      error = "a check of the reader failed (" + e.expression() + ")";
+      return false;
+    }
   } else {
     error = "unknown extension '." + ext + "' (supported: .off, .obj, .stl)";
     return false;

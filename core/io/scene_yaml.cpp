@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -284,11 +285,13 @@ Map Value::map() const { return Map(*ctx_, node_, path_, mark_); }
 // Runs a constructor; its std::invalid_argument (or any std::exception) becomes a SceneError
 // at `where`.
 template <typename F>
-auto construct(const Map& where, F&& f) -> decltype(f()) {
+auto construct(const Map& where, F&& f, const std::string& doing = "building it") -> decltype(f()) {
   try {
     return f();
   } catch (const SceneError&) {
     throw;
+  } catch (const std::bad_alloc&) {  // what() would only say "std::bad_alloc"
+    where.fail("out of memory while " + doing);
   } catch (const std::exception& e) {
     where.fail(e.what());
   }
@@ -372,7 +375,8 @@ ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx) {
   double scale = 1.0;
   if (auto s = m.find("scale")) scale = s->positive();
   if (ctx.read_files) ctx.read_files->push_back(resolved);
-  return construct(m, [&]() -> ContainerPtr<3> { return MeshContainer::from_file(resolved, scale); });
+  return construct(m, [&]() -> ContainerPtr<3> { return MeshContainer::from_file(resolved, scale); },
+                   "reading mesh '" + resolved + "'");
 }
 
 template <int D>
@@ -806,6 +810,8 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
     doc = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     ctx.fail(e.mark, "", "YAML syntax error: " + e.msg);
+  } catch (const std::bad_alloc&) {
+    throw SceneError(source_name, 0, 0, "", "out of memory while reading the scene file");
   }
   YAML::Mark start;  // line 0, column 0
   start.line = 0;

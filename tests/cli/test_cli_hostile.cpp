@@ -99,7 +99,7 @@ void expect_refused(Setup setup, const std::string& args, int exit_code, const s
   const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   EXPECT_EQ(r.exit_code, exit_code) << "(-1: killed by a signal) stderr: " << r.err;
   for (const std::string& m : mention) EXPECT_NE(r.err.find(m), std::string::npos) << "'" << m << "' not in: " << r.err;
-  for (const char* internal : {"std::", "filesystem_error", "bad_alloc", "YAML::", "CGAL", "terminate called"})
+  for (const char* internal : {"std::", "filesystem error", "filesystem_error", "bad_alloc", "YAML::", "CGAL", "terminate called"})
     EXPECT_EQ(r.err.find(internal), std::string::npos) << "internal name in: " << r.err;
   EXPECT_EQ(r.out, "") << "no summary for a refused run";
   EXPECT_LT(seconds, 2.0);
@@ -327,6 +327,34 @@ TEST(CliHostileInputs, AnalyzedPackingIsDevZero) {
 TEST(CliHostileInputs, ValidatedPackingIsAPipe) {
   expect_refused(with_scene("", [](const fs::path& w) { ASSERT_EQ(mkfifo((w / "p.csv").c_str(), 0644), 0); }),
                  "validate p.csv --scene s.yaml", 2, {"p.csv", "not a regular file"});
+}
+
+// ---- names the file system refuses, everywhere a path is taken ---------------------------
+
+TEST(CliHostileNames, SceneNameLongerThanNameMax) {
+  const std::string name = std::string(300, 's') + ".yaml";
+  expect_refused([](const fs::path&) {}, "pack " + name + " -o a.csv", 2, {name, "cannot read the scene file"});
+}
+
+TEST(CliHostileNames, PackingNameLongerThanNameMax) {
+  const std::string name = std::string(300, 'p') + ".csv";
+  expect_refused(with_scene(), "validate " + name + " --scene s.yaml", 2, {name});
+  expect_refused(with_scene(), "analyze " + name, 2, {name});
+}
+
+TEST(CliHostileNames, PlotsFolderNameLongerThanNameMax) {
+  expect_refused(with_scene("", [](const fs::path& w) { write_bytes(w / "g.csv", "id,x,y,z,r\n0,0.5,0.5,0.5,0.1\n"); }),
+                 "analyze g.csv --plots " + std::string(300, 'f'), 2, {"option --plots", "does not exist"});
+}
+
+// A run-time failure (exit 1): the interpreter cannot exist; nothing is drawn, nothing is left.
+TEST(CliHostileNames, PythonPathLongerThanNameMax) {
+  expect_refused(
+      [](const fs::path& w) {
+        write_bytes(w / "g.csv", "id,x,y,z,r\n0,0.5,0.5,0.5,0.1\n1,0.8,0.5,0.5,0.1\n");
+        fs::create_directory(w / "figs");
+      },
+      "analyze g.csv -q --plots figs --python /" + std::string(300, 'y'), 1, {"no plots", "not found"});
 }
 
 // ---- meshes --------------------------------------------------------------------------------
