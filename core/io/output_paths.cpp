@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "core/io/atomic_file.hpp"
+#include "core/io/temp_file_registry.hpp"
 
 namespace fp {
 namespace {
@@ -95,6 +96,10 @@ void check_writable(const NamedPath& p) {
 }  // namespace
 
 void check_output_paths(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs) {
+  // All of them are temporaries at once before the renames (temp_file_registry's table).
+  if (outputs.size() > kMaxTempPaths / 2)
+    refuse(outputs[kMaxTempPaths / 2], "is one file too many: at most " + std::to_string(kMaxTempPaths / 2) +
+                                           " files are written by one run");
   for (const NamedPath& o : outputs) {
     check_name(o);
     check_writable(o);

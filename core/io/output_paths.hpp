@@ -6,6 +6,7 @@
 // * a folder that does not exist, is not a folder or is not writable (access W_OK);
 // * a target that is a folder, or exists and is not a regular file (/dev/null, a pipe: the
 //   atomic replacement would rename a file over it);
+// * more than 128 files at once (they are all temporaries before the renames);
 // * two outputs that are the same file, and an output that is one of the command's inputs.
 //   "Same" after normalisation: ./ and .., symbolic links and hard links (device and inode for
 //   files that exist, the weakly canonical absolute path for those that do not).

@@ -258,6 +258,12 @@ TEST(CliHostileOutputs, OutputInAFileInsteadOfAFolder) {
   expect_refused(with_scene(), "pack s.yaml -o old.csv/a.csv", 2, {"'old.csv'", "not a folder"});
 }
 
+TEST(CliHostileOutputs, MoreOutputsThanCanBeWrittenAtOnce) {
+  std::string list = "output:\n";
+  for (int k = 0; k < 200; ++k) list += "  - {path: o" + std::to_string(k) + ".csv}\n";
+  expect_refused(with_scene(list), "pack s.yaml", 2, {"s.yaml:", "key 'output[128].path'", "at most 128"});
+}
+
 TEST(CliHostileOutputs, AnalyzeJsonIsThePacking) {
   expect_refused([](const fs::path& w) { write_bytes(w / "g.csv", "id,x,y,z,r\n0,0.5,0.5,0.5,0.1\n1,0.8,0.5,0.5,0.1\n"); },
                  "analyze g.csv --json g.csv", 2, {"option --json", "'g.csv'", "packing file"});
