@@ -8,7 +8,8 @@
 
 namespace fp {
 
-/// Names what the command is doing for its lifetime (innermost wins; restored at the end).
+/// Names what the command is doing for its lifetime (innermost wins). Ended by an exception,
+/// it is still named by the catch block that reports that exception.
 class Activity {
  public:
   explicit Activity(std::string what);
@@ -17,7 +18,7 @@ class Activity {
   Activity& operator=(const Activity&) = delete;
 
  private:
-  std::string previous_;
+  int unwinding_at_start_;
 };
 
 /// The message for the exception being handled: call inside a catch block.

@@ -32,6 +32,33 @@ TEST(FailureReport, OutOfMemoryNamesTheActivity) {
   EXPECT_EQ(message_of([] { throw std::bad_alloc(); }), "out of memory while packing scene 's.yaml'");
 }
 
+// The usual shape: the Activity lives inside the try block, so it has ended when the catch
+// block runs; its name must still be the one reported.
+TEST(FailureReport, TheActivityThatEndedWithTheExceptionIsNamed) {
+  const Activity outer("packing scene 's.yaml'");
+  std::string message;
+  try {
+    const Activity writing("writing the outputs");
+    throw std::bad_alloc();
+  } catch (...) {
+    message = failure_message();
+  }
+  EXPECT_EQ(message, "out of memory while writing the outputs");
+  try {
+    throw std::bad_alloc();
+  } catch (...) {
+    testing::internal::CaptureStderr();
+    EXPECT_EQ(report_failure(1), 1);
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "frontpack: error: out of memory while writing the outputs\n");
+  }
+  try {
+    throw std::bad_alloc();
+  } catch (...) {
+    message = failure_message();  // reported above: back to the live activity
+  }
+  EXPECT_EQ(message, "out of memory while packing scene 's.yaml'");
+}
+
 TEST(FailureReport, NoLibraryNamesInMessages) {
   const Activity doing("writing 'a.csv'");
   const std::string fs_message = message_of([] {
