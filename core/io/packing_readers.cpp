@@ -310,6 +310,9 @@ Packing<D> read_vtu(const std::string& path) {
       throw fail("DataArray '" + name + "' is not appended " + type + " x" + std::to_string(comps));
     const auto offset = parse_number<std::uint64_t>(a["offset"]);
     if (!offset) throw fail("DataArray '" + name + "' has no valid offset");
+    // Compared by division first: a crafted NumberOfPoints or offset must not wrap round.
+    if (*n > data.size() / (static_cast<std::uint64_t>(comps) * 8) || *offset > data.size())
+      throw fail("DataArray '" + name + "' runs past the end of the file");
     const std::uint64_t want = *n * static_cast<std::uint64_t>(comps) * 8;
     if (base + *offset + 8 + want > data.size()) throw fail("DataArray '" + name + "' runs past the end of the file");
     std::uint64_t bytes = 0;

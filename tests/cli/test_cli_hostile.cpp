@@ -435,6 +435,25 @@ TEST(CliHostileSeeds, LeadingZerosAreDecimalOnTheCommandLineAndInTheScene) {
   EXPECT_NE(read_bytes(dir.work() / "octal.csv"), read_bytes(dir.work() / "b.csv")) << "seeds 34 and 42 must differ";
 }
 
+// A VTU whose NumberOfPoints makes the byte counts wrap round 2^64 to those of one particle:
+// the reader compared the wrapped sizes and then reserved 2^61 particles.
+TEST(CliHostileInputs, VtuWithANumberOfPointsThatWrapsRound) {
+  expect_refused(
+      [](const fs::path& w) {
+        write_bytes(w / "one.yaml", kScene + "stop: {particles: 1}\n");
+        ASSERT_EQ(std::system(("cd " + quoted(w.string()) + " && " + quoted(frontpack_binary()) +
+                               " pack one.yaml -q -o one.vtu").c_str()),
+                  0);
+        std::string vtu = read_bytes(w / "one.vtu");
+        const std::string one = "NumberOfPoints=\"1\"";
+        ASSERT_NE(vtu.find(one), std::string::npos);
+        vtu.replace(vtu.find(one), one.size(), "NumberOfPoints=\"2305843009213693953\"");  // 2^61 + 1
+        write_bytes(w / "crafted.vtu", vtu);
+        fs::remove(w / "one.vtu");
+      },
+      "analyze crafted.vtu", 2, {"crafted.vtu", "runs past the end"});
+}
+
 // ---- several outputs, one of which cannot be written -------------------------------------
 
 // The second output passes the file-size limit (what a full disk does); the first one, complete
