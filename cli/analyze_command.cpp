@@ -1,6 +1,10 @@
 #include "cli/analyze_command.hpp"
 
+#include <stdlib.h>  // mkdtemp
 #include <sys/wait.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include <algorithm>
 #include <cstdio>
@@ -8,9 +12,12 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cli/failure_report.hpp"
 #include "cli/packing_input.hpp"
 #include "core/io/analysis_json.hpp"
 #include "core/io/atomic_file.hpp"
+#include "core/io/output_paths.hpp"
+#include "core/io/temp_file_registry.hpp"
 #include "core/metrics/packing_analysis.hpp"
 
 #ifndef FRONTPACK_PLOT_SCRIPT
@@ -41,27 +48,75 @@ std::string radius_cdf_csv(std::vector<double> radii, const RadiusDistribution* 
   return os.str();
 }
 
-/// Runs the plot script; returns an empty string on success, else what went wrong.
+/// The figures python/plot_analysis.py draws (keep in step with the script).
+const char* const kPlotFiles[] = {"vf_curve.png", "coordination.png", "radii.png",
+                                  "rdf.png",      "partial_coordination.png", "fabric.png"};
+
+/// A private folder inside the plots folder (mkdtemp: never one of the user's) for the script's
+/// input and output. Its files are registered for removal on Ctrl-C; removed with it at the end.
+class PlotWorkFolder {
+ public:
+  explicit PlotWorkFolder(const std::string& plots_dir) {
+    std::string name = (std::filesystem::path(plots_dir) / ".frontpack-plot-XXXXXX").string();
+    if (!::mkdtemp(name.data()))
+      throw std::runtime_error("cannot create a temporary folder in '" + plots_dir + "': " + std::strerror(errno));
+    path_ = name;
+    slots_.push_back(register_temp_path(path_, true));
+  }
+  ~PlotWorkFolder() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+    for (int s : slots_) unregister_temp_path(s);
+  }
+  PlotWorkFolder(const PlotWorkFolder&) = delete;
+  PlotWorkFolder& operator=(const PlotWorkFolder&) = delete;
+
+  /// A file inside, registered before it exists.
+  std::string file(const std::string& name) {
+    const std::string p = (std::filesystem::path(path_) / name).string();
+    slots_.push_back(register_temp_path(p));
+    return p;
+  }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::vector<int> slots_;
+};
+
+/// Runs the plot script into a private folder and moves the figures into the plots folder only
+/// when every one was drawn; returns an empty string on success, else what went wrong.
 std::string draw_plots(const AnalyzeCommandOptions& o, const std::string& json_text, const std::string& cdf_text) {
   namespace fs = std::filesystem;
-  if (!fs::exists(o.python))
-    return o.python + " not found: the plots need Debian's python3 and python3-matplotlib (apt-get install python3-matplotlib)";
-  const fs::path tmp = fs::path(o.plots_dir) / ".frontpack-plot-data";
-  fs::create_directories(tmp);
-  write_text_file_atomically((tmp / "analysis.json").string(), json_text);
-  write_text_file_atomically((tmp / "radius_cdf.csv").string(), cdf_text);
-  const std::string cmd = shell_quoted(o.python) + " " + shell_quoted(FRONTPACK_PLOT_SCRIPT) + " " +
-                          shell_quoted((tmp / "analysis.json").string()) + " " +
-                          shell_quoted((tmp / "radius_cdf.csv").string()) + " " + shell_quoted(o.plots_dir);
-  const int status = std::system(cmd.c_str());
   std::error_code ec;
-  fs::remove_all(tmp, ec);
+  if (!fs::exists(o.python, ec))
+    return o.python + " not found: the plots need Debian's python3 and python3-matplotlib (apt-get install python3-matplotlib)";
+  PlotWorkFolder work(o.plots_dir);
+  const std::string json_path = work.file("analysis.json"), cdf_path = work.file("radius_cdf.csv");
+  std::vector<std::string> drawn;
+  for (const char* name : kPlotFiles) drawn.push_back(work.file(name));
+  write_text_file_atomically(json_path, json_text);
+  write_text_file_atomically(cdf_path, cdf_text);
+  const std::string cmd = shell_quoted(o.python) + " " + shell_quoted(FRONTPACK_PLOT_SCRIPT) + " " +
+                          shell_quoted(json_path) + " " + shell_quoted(cdf_path) + " " + shell_quoted(work.path());
+  const int status = std::system(cmd.c_str());
   if (!WIFEXITED(status)) return "the plot script did not finish";
   switch (WEXITSTATUS(status)) {
-    case 0: return "";
+    case 0: break;
     case 3: return "matplotlib is missing: apt-get install python3-matplotlib (the numeric analysis is complete)";
     default: return "the plot script failed (exit " + std::to_string(WEXITSTATUS(status)) + ")";
   }
+  for (const std::string& f : drawn)
+    if (!fs::is_regular_file(f, ec)) return "the plot script did not draw " + fs::path(f).filename().string();
+  const CleanupSignalsBlocked hold;  // all figures or none, Ctrl-C included
+  std::size_t moved = 0;
+  for (; moved < drawn.size(); ++moved) {
+    const std::string target = (fs::path(o.plots_dir) / kPlotFiles[moved]).string();
+    if (std::rename(drawn[moved].c_str(), atomic_write_target(target).c_str()) != 0)
+      return "cannot move " + target + " into place: " + std::strerror(errno) + " (" + std::to_string(moved) +
+             " of " + std::to_string(drawn.size()) + " figures were replaced)";
+  }
+  return "";
 }
 
 template <int D>
@@ -98,21 +153,31 @@ int analyze(const std::optional<Scene>& scene, const Packing<D>& P, const Analyz
 int run_analyze_command(const AnalyzeCommandOptions& o) {
   PackingInput in;
   try {
-    if (!o.plots_dir.empty() && !std::filesystem::is_directory(o.plots_dir))
-      throw std::runtime_error("plots folder '" + o.plots_dir + "' does not exist");
-    const auto json_parent = std::filesystem::path(o.json_path).parent_path();
-    if (!o.json_path.empty() && !json_parent.empty() && !std::filesystem::is_directory(json_parent))
-      throw std::runtime_error("output folder '" + json_parent.string() + "' does not exist (for --json " + o.json_path + ")");
+    const Activity doing("reading packing '" + o.packing_path + "'");
+    std::vector<NamedPath> writes;
+    if (!o.json_path.empty()) writes.push_back({o.json_path, "option --json", "analysis JSON"});
+    if (!o.plots_dir.empty()) {
+      std::error_code ec;
+      if (!std::filesystem::is_directory(o.plots_dir, ec))
+        throw std::runtime_error("option --plots: plots folder '" + o.plots_dir +
+                                 "' does not exist (frontpack does not create folders)");
+      for (const char* name : kPlotFiles)
+        writes.push_back({(std::filesystem::path(o.plots_dir) / name).string(), "option --plots", "figure"});
+    }
+    check_output_paths(writes, {});  // before reading: a bad path is refused at once
     in = read_packing_input(o.packing_path, o.format, o.scene_path);
-  } catch (const std::exception& e) {  // the scene parser and the readers name file, line and key
-    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-    return 2;
+    std::vector<NamedPath> reads = {{o.packing_path, "argument PACKING", "packing file"}};
+    if (in.scene)
+      for (const NamedPath& r : scene_reads(*in.scene, "option --scene")) reads.push_back(r);
+    check_output_paths(writes, reads);
+  } catch (...) {  // the scene parser and the readers name file, line and key
+    return report_failure(2);
   }
   try {
+    const Activity doing("analysing packing '" + o.packing_path + "'");
     return in.dimension == 2 ? analyze<2>(in.scene, in.packing2, o) : analyze<3>(in.scene, in.packing3, o);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-    return 1;
+  } catch (...) {
+    return report_failure(1);
   }
 }
 

@@ -3,18 +3,24 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <charconv>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <string>
 
 #include "cli/analyze_command.hpp"
+#include "cli/failure_report.hpp"
 #include "cli/pack_command.hpp"
 #include "cli/validate_command.hpp"
+#include "core/io/temp_file_registry.hpp"
 #include "frontpack/version.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
   CLI::App app{"frontpack: dense packings of spheres and disks by the advancing front"};
   app.set_version_flag("--version", std::string("frontpack ") + fp::kVersion);
   app.require_subcommand(1);
@@ -24,15 +30,21 @@ int main(int argc, char** argv) {
   pack_cmd->add_option("scene", pack.scene_path, "scene file (YAML)")->required();
   pack_cmd->add_option("-o,--output", pack.output_path,
                        "write the packing to PATH (replaces the scene's output list; format from --format or the extension)");
-  // CLI11 would wrap "-1" round to 2^64-1; a seed is written as digits only.
-  const CLI::Validator unsigned_digits(
+  // Read as text and converted here: CLI11 would wrap "-1" round to 2^64-1, clamp a number past
+  // 2^64-1 and read "042" as octal 34, where the scene's `seed: 042` is 42. Decimal digits only.
+  std::string seed_text;
+  const CLI::Validator decimal_seed(
       [](const std::string& v) {
-        return !v.empty() && v.find_first_not_of("0123456789") == std::string::npos
-                   ? std::string()
-                   : "a seed is an unsigned 64-bit integer, got '" + v + "'";
+        std::uint64_t seed = 0;
+        const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), seed, 10);
+        if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos)
+          return "a seed is an unsigned 64-bit decimal integer, got '" + v + "'";
+        if (ec == std::errc::result_out_of_range || end != v.data() + v.size())
+          return "the seed " + v + " is beyond 2^64-1 = 18446744073709551615";
+        return std::string();
       },
       "UINT64");
-  pack_cmd->add_option("--seed", pack.seed, "override the scene's 64-bit seed")->check(unsigned_digits);
+  pack_cmd->add_option("--seed", seed_text, "override the scene's 64-bit seed (decimal)")->check(decimal_seed);
   pack_cmd->add_option("--format", pack.format, "format of -o: vtu | yade | lammps | csv | json");
   pack_cmd->add_option("--record", pack.record_path, "also write the JSON run record (without particles) to PATH");
   pack_cmd->add_flag("-q,--quiet", pack.quiet, "no summary on stdout");
@@ -81,8 +93,24 @@ int main(int argc, char** argv) {
   if (validate_cmd->parsed()) return fp::run_validate_command(check);
   if (analyze_cmd->parsed()) return fp::run_analyze_command(an);
   if (pack_cmd->parsed()) {
+    if (!seed_text.empty()) {
+      std::uint64_t seed = 0;
+      std::from_chars(seed_text.data(), seed_text.data() + seed_text.size(), seed, 10);  // checked above
+      pack.seed = seed;
+    }
     pack.progress = pack.force_progress || isatty(fileno(stderr));
     return fp::run_pack_command(pack);
   }
   return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  fp::install_temp_file_cleanup();  // Ctrl-C or kill while writing leaves no *.tmp-PID behind
+  try {  // the commands report their own failures; this is the net under them
+    return run(argc, argv);
+  } catch (...) {
+    return fp::report_failure(1);
+  }
 }

@@ -1,5 +1,7 @@
 #include "cli/pack_command.hpp"
 
+#include "cli/failure_report.hpp"
+#include "cli/packing_input.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/run_record_start.hpp"
 #include "cli/shape_pack_command.hpp"
@@ -13,13 +15,16 @@
 #include <string>
 #include <vector>
 
+#include "core/io/atomic_file.hpp"
 #include "core/io/output_format.hpp"
+#include "core/io/output_paths.hpp"
 #include "core/io/packing_writers.hpp"
 #include "core/io/run_record.hpp"
 #include "core/io/scene_yaml.hpp"
 #include "core/io/analysis_json.hpp"
 #include "core/metrics/packing_analysis.hpp"
 #include "front/pack.hpp"
+#include "shapes/io/shape_packing_writers.hpp"
 #include "frontpack/version.hpp"
 
 namespace fp {
@@ -33,8 +38,9 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Applies -o/--format/--seed to the scene and checks every output folder exists before any
-/// work is done, so a bad path costs nothing and creates nothing.
+/// Applies -o/--format/--seed to the scene and checks every file the run will write (outputs,
+/// their side files, the record) before any work is done, so a bad path costs nothing and
+/// creates nothing, and no output replaces another or an input.
 void apply_overrides(Scene& scene, const PackCommandOptions& o) {
   if (o.seed) scene.seed = *o.seed;
   if (!o.format.empty() && o.output_path.empty()) throw InputError("--format needs -o PATH");
@@ -49,17 +55,17 @@ void apply_overrides(Scene& scene, const PackCommandOptions& o) {
     }
     scene.outputs = {out};
   }
-  std::vector<std::string> paths;
-  for (const OutputSpec& out : scene.outputs) paths.push_back(out.path);
-  if (!o.record_path.empty()) paths.push_back(o.record_path);
-  for (const std::string& p : paths) {
-    const std::filesystem::path parent = std::filesystem::path(p).parent_path();
-    if (!parent.empty() && !std::filesystem::is_directory(parent))
-      throw InputError("output folder '" + parent.string() + "' does not exist (for output '" + p + "')");
-    if (std::filesystem::is_directory(p)) throw InputError("output path '" + p + "' is a folder");
+  std::vector<NamedPath> writes;
+  for (const OutputSpec& out : scene.outputs) {
+    const std::string where = out.spot.file.empty() ? "option -o" : out.spot.describe();
+    writes.push_back({out.path, where, "output"});
+    if (!scene.particle_templates.empty())  // shape packings write a side file for vtu and lammps
+      for (const std::string& side : companion_paths(parse_output_format(out.format), out.path))
+        writes.push_back({side, where, "the side file of output '" + out.path + "'"});
   }
+  if (!o.record_path.empty()) writes.push_back({o.record_path, "option --record", "run record"});
+  check_output_paths(writes, scene_reads(scene, "argument SCENE"));
 }
-
 
 template <int D>
 int run(const Scene& scene, const PackCommandOptions& o) {
@@ -73,6 +79,7 @@ int run(const Scene& scene, const PackCommandOptions& o) {
   const Packing<D>& P = res.packing;
 
   // Every figure of `frontpack analyze`, from the same code, the independent validation included.
+  const Activity analysing("analysing the packing of '" + scene.source_path + "'");
   const auto t_metrics = Clock::now();
   AnalysisOptions analysis_options;
   analysis_options.contact_tolerance = scene.packer.contact_tolerance;
@@ -108,8 +115,13 @@ int run(const Scene& scene, const PackCommandOptions& o) {
   rec.info = {{"stop_reason", to_string(res.stop)}, {"validation", vr.ok ? "ok" : "FAILED"}};
 
   const auto t_write = Clock::now();
-  for (const OutputSpec& out : scene.outputs) write_packing<D>(parse_output_format(out.format), out.path, P, rec);
-  if (!o.record_path.empty()) write_run_record(o.record_path, rec);
+  {
+    const Activity writing("writing the outputs of '" + scene.source_path + "'");
+    AtomicFileGroup all_or_nothing;  // every output and the record, or none of them
+    for (const OutputSpec& out : scene.outputs) write_packing<D>(parse_output_format(out.format), out.path, P, rec);
+    if (!o.record_path.empty()) write_run_record(o.record_path, rec);
+    all_or_nothing.commit();
+  }
   const double write_seconds = since(t_write);
 
   if (!o.quiet) {
@@ -137,35 +149,22 @@ int run(const Scene& scene, const PackCommandOptions& o) {
 
 int run_pack_command(const PackCommandOptions& o) {
   Scene scene;
-  try {
+  try {  // reading and checking what was given: any failure is bad input
+    const Activity doing("reading scene '" + o.scene_path + "'");
     scene = load_scene(o.scene_path);
     apply_overrides(scene, o);
-  } catch (const SceneError& e) {
-    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-    return 2;
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-    return 2;
-  }
-  if (!scene.particle_templates.empty()) {
     // Every shape-specific input problem (family, parameters, output formats) before any work.
-    try {
-      check_shape_scene(scene);
-    } catch (const SceneError& e) {
-      std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-      return 2;
-    } catch (const std::invalid_argument& e) {
-      std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-      return 2;
-    }
+    if (!scene.particle_templates.empty()) check_shape_scene(scene);
+  } catch (...) {
+    return report_failure(2);
   }
   try {
+    const Activity doing("packing scene '" + o.scene_path + "'");
     if (!scene.particle_templates.empty())  // non-spherical particles: the general front
       return scene.dimension == 2 ? run_shape_pack<2>(scene, o) : run_shape_pack<3>(scene, o);
     return scene.dimension == 2 ? run<2>(scene, o) : run<3>(scene, o);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-    return 1;
+  } catch (...) {
+    return report_failure(1);
   }
 }
 

@@ -28,4 +28,12 @@ PackingInput read_packing_input(const std::string& packing_path, const std::stri
   return in;
 }
 
+std::vector<NamedPath> scene_reads(const Scene& scene, const std::string& named_by) {
+  std::vector<NamedPath> reads;
+  for (std::size_t k = 0; k < scene.read_files.size(); ++k)
+    reads.push_back({scene.read_files[k], k == 0 ? named_by : scene.source_path + ": key 'container.file'",
+                     k == 0 ? "scene file" : "mesh file"});
+  return reads;
+}
+
 }  // namespace fp

@@ -2,8 +2,10 @@
 // What `validate` and `analyze` read: a packing file and, optionally, the scene it fills.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/geometry/packing.hpp"
+#include "core/io/output_paths.hpp"
 #include "core/io/scene.hpp"
 
 namespace fp {
@@ -20,5 +22,9 @@ struct PackingInput {
 /// (and line, key) on any bad input: the commands report it with exit code 2.
 PackingInput read_packing_input(const std::string& packing_path, const std::string& format,
                                 const std::string& scene_path);
+
+/// The files `scene` was read from (itself, a mesh), for check_output_paths: no output may
+/// replace them. `named_by` says how the scene was given ("argument SCENE", "option --scene").
+std::vector<NamedPath> scene_reads(const Scene& scene, const std::string& named_by);
 
 }  // namespace fp

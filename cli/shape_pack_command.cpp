@@ -6,9 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "cli/failure_report.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/run_record_start.hpp"
 #include "contact/shape_validation.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/io/output_format.hpp"
 #include "core/io/run_record.hpp"
 #include "front/pack_shapes_scene.hpp"
@@ -49,6 +51,7 @@ int run_shape_pack(const Scene& scene, const PackCommandOptions& o) {
   progress.finish();
   const ShapePacking<D>& P = res.packing;
 
+  const Activity checking("validating the packing of '" + scene.source_path + "'");
   const auto t_check = Clock::now();
   const ShapeValidation v = validate_shapes<D>(P, container, res.gap_tolerance);
   const double check_seconds = since(t_check);
@@ -79,8 +82,13 @@ int run_shape_pack(const Scene& scene, const PackCommandOptions& o) {
               {"minimisation_algorithm", scene.packer.minimisation.algorithm}};
 
   const auto t_write = Clock::now();
-  for (const OutputSpec& out : scene.outputs) write_shape_packing<D>(parse_output_format(out.format), out.path, P, rec);
-  if (!o.record_path.empty()) write_run_record(o.record_path, rec);
+  {
+    const Activity writing("writing the outputs of '" + scene.source_path + "'");
+    AtomicFileGroup all_or_nothing;  // every output and the record, or none of them
+    for (const OutputSpec& out : scene.outputs) write_shape_packing<D>(parse_output_format(out.format), out.path, P, rec);
+    if (!o.record_path.empty()) write_run_record(o.record_path, rec);
+    all_or_nothing.commit();
+  }
   const double write_seconds = since(t_write);
 
   if (!o.quiet) {

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "cli/failure_report.hpp"
 #include "cli/packing_input.hpp"
 #include "core/metrics/validate.hpp"
 
@@ -44,16 +45,16 @@ int validate(const Scene& scene, const Packing<D>& P, const ValidateCommandOptio
 int run_validate_command(const ValidateCommandOptions& o) {
   PackingInput in;
   try {
+    const Activity doing("reading packing '" + o.packing_path + "'");
     in = read_packing_input(o.packing_path, o.format, o.scene_path);
-  } catch (const std::exception& e) {  // the scene parser and the readers name file, line and key
-    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-    return 2;
+  } catch (...) {  // the scene parser and the readers name file, line and key
+    return report_failure(2);
   }
   try {
+    const Activity doing("validating packing '" + o.packing_path + "'");
     return in.dimension == 2 ? validate<2>(*in.scene, in.packing2, o) : validate<3>(*in.scene, in.packing3, o);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "frontpack: error: %s\n", e.what());
-    return 1;
+  } catch (...) {
+    return report_failure(1);
   }
 }
 

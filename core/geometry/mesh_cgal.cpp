@@ -1,10 +1,12 @@
 // CGAL translation unit 2 of 2: spatial queries on a closed triangle surface (AABB tree,
-// Side_of_triangle_mesh). Everything CGAL stays in this file; the interface is mesh_cgal.hpp.
+// Side_of_triangle_mesh) and its self-intersection test. Everything CGAL stays in this file; the interface is mesh_cgal.hpp.
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/exceptions.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <limits>
@@ -152,17 +154,26 @@ class AnyCloser {
 
 struct TriangleSurfaceIndex::Impl {
   Mesh mesh;  ///< face i is facet i (geometry only: the caller may re-orient its facets afterwards)
-  Tree tree;  ///< over the facets of non-zero area
+  std::vector<Mesh::Face_index> solid_faces;  ///< the facets of non-zero area
+  Tree tree;  ///< over solid_faces
   std::unique_ptr<Side> side;
 };
 
 TriangleSurfaceIndex::TriangleSurfaceIndex(const std::vector<Vec3>& vertices,
                                            const std::vector<std::array<int, 3>>& triangles)
     : impl_(std::make_unique<Impl>()) {
+  try {
+    build(vertices, triangles);
+  } catch (const CGAL::Failure_exception& e) {  // its what() is a page of CGAL internals
+    throw std::invalid_argument("a check of the geometry library failed (" + e.expression() + ")");
+  }
+}
+
+void TriangleSurfaceIndex::build(const std::vector<Vec3>& vertices, const std::vector<std::array<int, 3>>& triangles) {
   Impl& m = *impl_;
   m.mesh.reserve(vertices.size(), 3 * triangles.size() / 2, triangles.size());
   for (const Vec3& v : vertices) m.mesh.add_vertex(to_point(v));
-  std::vector<Mesh::Face_index> solid_faces;
+  std::vector<Mesh::Face_index>& solid_faces = m.solid_faces;
   solid_faces.reserve(triangles.size());
   for (std::size_t f = 0; f < triangles.size(); ++f) {
     const auto& t = triangles[f];
@@ -208,6 +219,22 @@ bool TriangleSurfaceIndex::any_facet_closer_than(const Vec3& p, double distance)
   AnyCloser traits(p, distance * distance, impl_->tree.traits());
   impl_->tree.traversal(to_point(p), traits);
   return traits.found();
+}
+
+bool TriangleSurfaceIndex::find_crossing_facets(int& f, int& g) const {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  // Zero-area facets are left out: PMP counts each as an intersection with itself, and they
+  // change neither the inside nor the distances (see the constructor).
+  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
+  try {
+    PMP::self_intersections(impl_->solid_faces, impl_->mesh, std::back_inserter(pairs), CGAL::parameters::maximum_number(1));
+  } catch (const CGAL::Failure_exception& e) {
+    throw std::invalid_argument("the self-intersection test failed (" + e.expression() + ")");
+  }
+  if (pairs.empty()) return false;
+  f = static_cast<int>(pairs.front().first.idx());
+  g = static_cast<int>(pairs.front().second.idx());
+  return true;
 }
 
 }  // namespace fp::detail

@@ -39,8 +39,14 @@ class TriangleSurfaceIndex {
   void facets_within(const Vec3& p, double reach, std::vector<int>& out) const;
   /// True if some facet is strictly closer to p than `distance` (stops at the first found).
   bool any_facet_closer_than(const Vec3& p, double distance) const;
+  /// Whether two facets of non-zero area cross (more than a shared edge or vertex): a surface
+  /// that intersects itself, or two closed parts that overlap. Sets f and g to the first pair
+  /// found (CGAL::Polygon_mesh_processing::does_self_intersect's search, kept to name them).
+  bool find_crossing_facets(int& f, int& g) const;
 
  private:
+  void build(const std::vector<Vec3>& vertices, const std::vector<std::array<int, 3>>& triangles);
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -1,15 +1,17 @@
-// CGAL translation unit 1 of 2: reading polygon soups from OFF / OBJ / STL files.
-// Kept apart from the spatial queries (mesh_cgal.cpp) so the two heavy TUs build in parallel.
+// CGAL translation unit 1 of 2: reading polygon soups from OBJ / STL files (OFF has its own
+// strict reader, off_reader.hpp). Kept apart from the spatial queries (mesh_cgal.cpp) so the
+// two heavy TUs build in parallel.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OBJ.h>
-#include <CGAL/IO/OFF.h>
 #include <CGAL/IO/STL.h>
+#include <CGAL/exceptions.h>
 
 #include <algorithm>
 #include <cctype>
 #include <fstream>
 
 #include "core/geometry/mesh_cgal.hpp"
+#include "core/geometry/off_reader.hpp"
 
 namespace fp::detail {
 
@@ -30,11 +32,15 @@ bool read_polygon_soup(const std::string& path, PolygonSoup& soup, std::string& 
   std::vector<std::vector<std::size_t>> polygons;
   bool ok = false;
   if (ext == "off") {
-    ok = CGAL::IO::read_OFF(path, points, polygons);
-  } else if (ext == "obj") {
-    ok = CGAL::IO::read_OBJ(path, points, polygons);
-  } else if (ext == "stl") {
-    ok = CGAL::IO::read_STL(path, points, polygons);  // binary first, then ascii; merges equal points
+    return read_off(path, soup, error);
+  } else if (ext == "obj" || ext == "stl") {
+    try {
+      ok = ext == "obj" ? CGAL::IO::read_OBJ(path, points, polygons)
+                        : CGAL::IO::read_STL(path, points, polygons);  // binary first, then ascii; merges equal points
+    } catch (const CGAL::Failure_exception& e) {  // its what() is a page of CGAL internals
+      error = "a check of the reader failed (" + e.expression() + ")";
+      return false;
+    }
   } else {
     error = "unknown extension '." + ext + "' (supported: .off, .obj, .stl)";
     return false;

@@ -244,6 +244,15 @@ MeshContainer::MeshContainer(std::vector<Vec3> vertices, std::vector<std::array<
   } catch (const std::invalid_argument& e) {
     refuse(name_, std::string("cannot be indexed: ") + e.what());
   }
+  // Inside and outside are meaningless where the surface crosses itself or two shells overlap.
+  if (int f = 0, g = 0; index_->find_crossing_facets(f, g)) {
+    const auto centre = [&](int k) {
+      const auto& t = triangles_[k];
+      return Vec3((vertices_[t[0]] + vertices_[t[1]] + vertices_[t[2]]) / 3.0);
+    };
+    refuse(name_, "intersects itself: two of its facets cross, near " + detail::format_vec<3>(0.5 * (centre(f) + centre(g))) +
+                      " (a surface folding through itself, or two closed parts that overlap)");
+  }
 
   // Orient each component outward: step off its largest facets along the normal; outside must
   // be out and the opposite side in. Works for nested shells (a cavity gets inward normals).

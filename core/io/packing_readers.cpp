@@ -15,12 +15,15 @@
 
 #include "core/geometry/local_frame.hpp"
 #include "core/io/exact_decimal.hpp"
+#include "core/io/input_file.hpp"
 #include "core/io/run_record.hpp"
 
 namespace fp {
 namespace {
 
 std::string read_whole_file(const std::string& path) {
+  if (const std::string problem = input_file_problem(path); !problem.empty())
+    throw std::runtime_error("packing file '" + path + "' " + problem);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot open '" + path + "' for reading");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -323,6 +326,9 @@ Packing<D> read_vtu(const std::string& path, const Vec<D>& origin) {
       throw fail("DataArray '" + name + "' is not appended " + type + " x" + std::to_string(comps));
     const auto offset = parse_number<std::uint64_t>(a["offset"]);
     if (!offset) throw fail("DataArray '" + name + "' has no valid offset");
+    // Compared by division first: a crafted NumberOfPoints or offset must not wrap round.
+    if (*n > data.size() / (static_cast<std::uint64_t>(comps) * 8) || *offset > data.size())
+      throw fail("DataArray '" + name + "' runs past the end of the file");
     const std::uint64_t want = *n * static_cast<std::uint64_t>(comps) * 8;
     if (base + *offset + 8 + want > data.size()) throw fail("DataArray '" + name + "' runs past the end of the file");
     std::uint64_t bytes = 0;

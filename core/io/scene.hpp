@@ -64,11 +64,6 @@ struct StopCriteria {
   // The front running empty always stops the run.
 };
 
-struct OutputSpec {
-  std::string format;  ///< vtu | yade | lammps | csv | json
-  std::string path;    ///< relative paths are relative to the working directory
-};
-
 /// Where a value was written in the scene file, so that errors found later (shape families are
 /// resolved in shapes/, above core/) still name the file, line and key (SceneError).
 struct SourceSpot {
@@ -76,6 +71,18 @@ struct SourceSpot {
   int line = 0;    ///< 1-based; 0 = unknown
   int column = 0;
   std::string key; ///< dotted path, e.g. "particles[0].aspect_ratio"
+  /// "file:line:column: key 'k'" as in SceneError messages.
+  std::string describe() const {
+    std::string s = file;
+    if (line > 0) s += ":" + std::to_string(line) + ":" + std::to_string(column);
+    return key.empty() ? s : s + ": key '" + key + "'";
+  }
+};
+
+struct OutputSpec {
+  std::string format;  ///< vtu | yade | lammps | csv | json
+  std::string path;    ///< relative paths are relative to the working directory
+  SourceSpot spot;     ///< where `path` was written (empty file for -o)
 };
 
 /// A shape family's parameters as written in the scene (everything but the common template keys),
@@ -126,6 +133,8 @@ struct Scene {
   PackerOptions packer;
   StopCriteria stop;
   std::vector<OutputSpec> outputs;
+  /// Every file the scene was read from (itself, a mesh): no output may replace them.
+  std::vector<std::string> read_files;
 };
 
 }  // namespace fp

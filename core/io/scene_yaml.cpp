@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -23,6 +24,7 @@
 #include "core/geometry/local_frame.hpp"
 #include "core/geometry/mesh_container.hpp"
 #include "core/geometry/polygon_container.hpp"
+#include "core/io/input_file.hpp"
 #include "core/io/output_format.hpp"
 #include "core/sampling/constant_radius.hpp"
 #include "core/sampling/discrete_radius.hpp"
@@ -85,6 +87,7 @@ std::string shown(const YAML::Node& n) {
 struct Context {
   std::string file;
   std::filesystem::path folder;  // of the scene file: relative mesh paths start here
+  std::vector<std::string>* read_files = nullptr;  // Scene::read_files: the mesh is added
 
   [[noreturn]] void fail(const YAML::Mark& m, const std::string& key, const std::string& message) const {
     const bool known = !m.is_null() && m.line >= 0;
@@ -283,11 +286,13 @@ Map Value::map() const { return Map(*ctx_, node_, path_, mark_); }
 // Runs a constructor; its std::invalid_argument (or any std::exception) becomes a SceneError
 // at `where`.
 template <typename F>
-auto construct(const Map& where, F&& f) -> decltype(f()) {
+auto construct(const Map& where, F&& f, const std::string& doing = "building it") -> decltype(f()) {
   try {
     return f();
   } catch (const SceneError&) {
     throw;
+  } catch (const std::bad_alloc&) {  // what() would only say "std::bad_alloc"
+    where.fail("out of memory while " + doing);
   } catch (const std::exception& e) {
     where.fail(e.what());
   }
@@ -368,8 +373,11 @@ ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx) {
   const Value file = m.get("file", "an STL, OFF or OBJ surface, relative to the scene file's folder");
   const std::string name = file.string();
   if (name.empty()) file.fail("must name a file");
+  if (name.find('\0') != std::string::npos) file.fail("the file name contains a NUL byte");
   const std::filesystem::path p(name);
   const std::string resolved = (p.is_absolute() ? p : (ctx.folder / p)).lexically_normal().string();
+  if (const std::string problem = input_file_problem(resolved); !problem.empty())
+    file.fail("mesh file '" + resolved + "' " + problem);
   {
     std::ifstream probe(resolved, std::ios::binary);
     if (!probe || std::filesystem::is_directory(resolved)) {
@@ -382,7 +390,9 @@ ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx) {
   }
   double scale = 1.0;
   if (auto s = m.find("scale")) scale = s->positive();
-  return construct(m, [&]() -> ContainerPtr<3> { return MeshContainer::from_file(resolved, scale, FrameChoice::Local); });
+  if (ctx.read_files) ctx.read_files->push_back(resolved);
+  return construct(m, [&]() -> ContainerPtr<3> { return MeshContainer::from_file(resolved, scale, FrameChoice::Local); },
+                   "reading mesh '" + resolved + "'");
 }
 
 template <int D>
@@ -598,6 +608,8 @@ std::vector<OutputSpec> parse_outputs(const Value& v) {
     OutputSpec spec;
     spec.path = path.string();
     if (spec.path.empty()) path.fail("must not be empty");
+    if (spec.path.find('\0') != std::string::npos) path.fail("the path contains a NUL byte");
+    spec.spot = path.spot();
     if (auto f = m.find("format")) {
       const std::string name = f->string();
       try {
@@ -814,6 +826,8 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
     doc = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     ctx.fail(e.mark, "", "YAML syntax error: " + e.msg);
+  } catch (const std::bad_alloc&) {
+    throw SceneError(source_name, 0, 0, "", "out of memory while reading the scene file");
   }
   YAML::Mark start;  // line 0, column 0
   start.line = 0;
@@ -823,6 +837,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
   Scene scene;
   scene.source_path = source_name;
   scene.source_text = text;
+  ctx.read_files = &scene.read_files;
   try {
     const Map root(ctx, doc, "", doc.Mark().is_null() ? start : doc.Mark());
     root.check_known({"dimension", "seed", "container", "particles", "packer", "stop", "output"});
@@ -845,13 +860,23 @@ Scene load_scene(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw SceneError(path, 0, 0, "", "is a folder; give the scene file (YAML) itself, e.g. scenes/demo.yaml");
+  const std::string problem = input_file_problem(path);
+  if (!problem.empty()) throw SceneError(path, 0, 0, "", "the scene file " + problem);
+  const std::string limit = "scene files are limited to " + std::to_string(kMaxSceneBytes >> 20) + " MiB";
+  if (const auto size = std::filesystem::file_size(path, ec); !ec && size > kMaxSceneBytes)
+    throw SceneError(path, 0, 0, "", "the scene file is " + std::to_string(size) + " bytes; " + limit);
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     const int err = errno;
     throw SceneError(path, 0, 0, "", std::string("cannot read the scene file") + (err ? std::string(": ") + std::strerror(err) : ""));
   }
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return parse_scene(text, path);
+  std::string text(kMaxSceneBytes + 1, '\0');  // no more than the cap, even if the file grows meanwhile
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxSceneBytes) throw SceneError(path, 0, 0, "", "the scene file grew while it was read; " + limit);
+  Scene scene = parse_scene(text, path);
+  scene.read_files.insert(scene.read_files.begin(), path);
+  return scene;
 }
 
 }  // namespace fp

@@ -52,6 +52,7 @@
 //     particles: integer > 0 (1e6 accepted);  volume_fraction: in (0, 1);  time: seconds > 0
 //   output: list of {format: vtu | yade | lammps | csv | json (default: from the path's
 //           extension), path*: relative to the working directory}
+#include <cstddef>
 #include <string>
 
 #include "core/io/scene.hpp"
@@ -59,7 +60,12 @@
 
 namespace fp {
 
-/// Reads and parses `path`. Throws SceneError (also when the file cannot be read).
+/// Largest scene file read (yaml-cpp needs about 0.7 s and 160 MB per MiB; geometry that big
+/// belongs in a mesh file).
+inline constexpr std::size_t kMaxSceneBytes = 4u << 20;
+
+/// Reads and parses `path`. Throws SceneError (also when the file cannot be read, is not a
+/// regular file, or is larger than kMaxSceneBytes).
 Scene load_scene(const std::string& path);
 
 /// Parses scene text; `source_name` is used in messages, stored as Scene::source_path, and

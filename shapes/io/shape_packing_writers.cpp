@@ -691,6 +691,12 @@ std::string surfaces_path(const std::string& path) { return with_suffix(path, ".
 
 std::string multisphere_path(const std::string& path) { return with_suffix(path, ".multisphere.txt"); }
 
+std::vector<std::string> companion_paths(OutputFormat format, const std::string& path) {
+  if (format == OutputFormat::Vtu) return {surfaces_path(path)};
+  if (format == OutputFormat::Lammps) return {multisphere_path(path)};
+  return {};
+}
+
 template <int D>
 void check_shape_format(OutputFormat format, const std::vector<std::string>& families) {
   if (!format_writes_balls_only(format)) return;

@@ -84,6 +84,10 @@ void write_shape_packing(OutputFormat format, const std::string& path, const Sha
 template <int D>
 void check_shape_format(OutputFormat format, const std::vector<std::string>& families);
 
+/// Every file besides `path` that an output of `format` writes (its companion, if any): the
+/// commands check them like the outputs themselves, before packing.
+std::vector<std::string> companion_paths(OutputFormat format, const std::string& path);
+
 /// The surfaces companion of a vtu output: "out/capsules.vtu" -> "out/capsules.surfaces.vtu".
 std::string surfaces_path(const std::string& path);
 

@@ -128,8 +128,25 @@ TEST(MeshContainer, RefusesBadFilesNamingThem) {
   const std::string garbage = std::string(FRONTPACK_BINARY_DIR) + "/garbage_mesh_test.off";
   std::ofstream(garbage) << "this is not an OFF file\n1 2 three\n";
   testref::expect_invalid([&] { MeshContainer::from_file(garbage); }, {"garbage_mesh_test.off", "cannot be read"});
+  testref::expect_invalid([] { MeshContainer::from_file(data("self_intersecting.off")); },
+                          {"self_intersecting.off", "intersects itself"});
+  testref::expect_invalid([] { MeshContainer::from_file(data("overlapping_cubes.off")); },
+                          {"overlapping_cubes.off", "intersects itself"});
   testref::expect_invalid([] { MeshContainer::from_file(data("cube.stl"), 0.0); }, {"scale", "cube.stl"});
   testref::expect_invalid([] { MeshContainer::from_file(data("cube.stl"), std::nan("")); }, {"scale"});
+}
+
+// Shells that overlap are refused; shells that touch nowhere are a solid and its cavity, or two
+// solids side by side.
+TEST(MeshContainer, OverlappingShellsAreRefusedSeparateOnesAccepted) {
+  for (const double second_lo : {0.5, 3.0}) {
+    std::vector<Vec3> v;
+    Tris t;
+    add_cube(v, t, 0.0, 2.0);
+    add_cube(v, t, second_lo, 2.0);
+    if (second_lo < 2.0) testref::expect_invalid([&] { MeshContainer::from_triangles(v, t, "two"); }, {"two", "intersects itself"});
+    else EXPECT_NEAR(MeshContainer::from_triangles(v, t, "two")->measure(), 16.0, 1e-12);
+  }
 }
 
 TEST(MeshContainer, RefusesBadTriangles) {

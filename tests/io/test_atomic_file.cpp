@@ -9,6 +9,7 @@
 
 #include "core/io/atomic_file.hpp"
 #include "core/io/packing_writers.hpp"
+#include "core/io/temp_file_registry.hpp"
 #include "tests/io/io_test_util.hpp"
 
 namespace fp {
@@ -150,6 +151,93 @@ TEST(AtomicFile, ReadOnlyFolderFailsCleanly) {
   std::filesystem::permissions(sub, std::filesystem::perms::owner_all);
   EXPECT_NE(msg.find(path), std::string::npos) << msg;
   EXPECT_TRUE(std::filesystem::is_empty(sub));
+}
+
+TEST(AtomicFile, SymbolicLinkIsWrittenThrough) {
+  TempDir dir;
+  spit(dir.file("real.txt"), "old");
+  std::filesystem::create_symlink("real.txt", dir.file("link.txt"));
+  write_text_file_atomically(dir.file("link.txt"), "new");
+  EXPECT_TRUE(std::filesystem::is_symlink(dir.file("link.txt")));
+  EXPECT_EQ(slurp(dir.file("real.txt")), "new");
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"link.txt", "real.txt"}));
+}
+
+TEST(AtomicFileGroup, NothingIsReplacedBeforeCommit) {
+  TempDir dir;
+  spit(dir.file("a.txt"), "old a");
+  {
+    AtomicFileGroup group;
+    write_text_file_atomically(dir.file("a.txt"), "new a");
+    write_text_file_atomically(dir.file("b.txt"), "new b");
+    EXPECT_EQ(slurp(dir.file("a.txt")), "old a");
+    EXPECT_FALSE(std::filesystem::exists(dir.file("b.txt")));
+    group.commit();
+  }
+  EXPECT_EQ(slurp(dir.file("a.txt")), "new a");
+  EXPECT_EQ(slurp(dir.file("b.txt")), "new b");
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"a.txt", "b.txt"}));
+}
+
+TEST(AtomicFileGroup, AnExceptionBeforeCommitLeavesEveryTargetAsItWas) {
+  TempDir dir;
+  spit(dir.file("a.txt"), "old a");
+  try {
+    AtomicFileGroup group;
+    write_text_file_atomically(dir.file("a.txt"), "new a");
+    write_text_file_atomically(dir.file("b.txt"), "new b");
+    write_text_file_atomically(dir.file("no_such_folder/c.txt"), "c");
+    group.commit();
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no_such_folder"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(slurp(dir.file("a.txt")), "old a");
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"a.txt"});
+}
+
+// A rename that fails in the middle of commit() (here: its temporary vanished) puts back the
+// targets already replaced: the old file swapped back, the new file removed again.
+TEST(AtomicFileGroup, ARenameFailingMidCommitUndoesTheOthers) {
+  TempDir dir;
+  spit(dir.file("a.txt"), "old a");
+  spit(dir.file("c.txt"), "old c");
+  std::string msg;
+  {
+    AtomicFileGroup group;
+    write_text_file_atomically(dir.file("a.txt"), "new a");  // replaces an existing file
+    write_text_file_atomically(dir.file("b.txt"), "new b");  // creates one
+    std::string c_temp;
+    {
+      AtomicFile c(dir.file("c.txt"));
+      c.stream() << "new c";
+      c_temp = c.temp_path();
+      c.commit();
+    }
+    ASSERT_TRUE(std::filesystem::remove(c_temp));
+    msg = error_of([&] { group.commit(); });
+  }
+  EXPECT_NE(msg.find("c.txt"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("no file was replaced"), std::string::npos) << msg;
+  EXPECT_EQ(slurp(dir.file("a.txt")), "old a");
+  EXPECT_EQ(slurp(dir.file("c.txt")), "old c");
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"a.txt", "c.txt"}));
+}
+
+TEST(TempFileRegistry, RegisteredPathsAreRemovedFilesBeforeFolders) {
+  TempDir dir;
+  const auto sub = dir.path() / "sub";
+  std::filesystem::create_directory(sub);
+  const int folder = register_temp_path(sub.string(), true);
+  spit((sub / "x.tmp").string(), "x");
+  const int file = register_temp_path((sub / "x.tmp").string());
+  spit(dir.file("kept.txt"), "kept");
+  const int forgotten = register_temp_path(dir.file("kept.txt"));
+  unregister_temp_path(forgotten);
+  remove_registered_temp_paths();
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"kept.txt"});
+  unregister_temp_path(folder);
+  unregister_temp_path(file);
 }
 
 }  // namespace
