@@ -9,6 +9,8 @@
 #include <CGAL/exceptions.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -153,6 +155,11 @@ class AnyCloser {
 }  // namespace
 
 struct TriangleSurfaceIndex::Impl {
+  // CGAL sees the surface scaled by a power of two to an extent of about 1 (exact): its ray
+  // shooting hung on a mesh scaled by 2^60, and a scene scaled by any power of two must behave
+  // exactly as at scale 1 (issue 9).
+  double scale = 1.0, inv = 1.0;
+  Point in(const Vec3& p) const { return to_point(Vec3(p * inv)); }
   Mesh mesh;  ///< face i is facet i (geometry only: the caller may re-orient its facets afterwards)
   std::vector<Mesh::Face_index> solid_faces;  ///< the facets of non-zero area
   Tree tree;  ///< over solid_faces
@@ -171,8 +178,16 @@ TriangleSurfaceIndex::TriangleSurfaceIndex(const std::vector<Vec3>& vertices,
 
 void TriangleSurfaceIndex::build(const std::vector<Vec3>& vertices, const std::vector<std::array<int, 3>>& triangles) {
   Impl& m = *impl_;
+  double extent = 0.0;
+  for (const Vec3& v : vertices) extent = std::max(extent, v.cwiseAbs().maxCoeff());
+  if (extent > 0.0 && std::isfinite(extent)) {
+    int e = 0;
+    std::frexp(extent, &e);
+    m.scale = std::ldexp(1.0, e);
+    m.inv = std::ldexp(1.0, -e);
+  }
   m.mesh.reserve(vertices.size(), 3 * triangles.size() / 2, triangles.size());
-  for (const Vec3& v : vertices) m.mesh.add_vertex(to_point(v));
+  for (const Vec3& v : vertices) m.mesh.add_vertex(m.in(v));
   std::vector<Mesh::Face_index>& solid_faces = m.solid_faces;
   solid_faces.reserve(triangles.size());
   for (std::size_t f = 0; f < triangles.size(); ++f) {
@@ -181,7 +196,7 @@ void TriangleSurfaceIndex::build(const std::vector<Vec3>& vertices, const std::v
         m.mesh.add_face(Mesh::Vertex_index(t[0]), Mesh::Vertex_index(t[1]), Mesh::Vertex_index(t[2]));
     if (fi == Mesh::null_face())
       throw std::invalid_argument("facet " + std::to_string(f) + " does not fit a manifold, oriented surface");
-    if (!CGAL::collinear(to_point(vertices[t[0]]), to_point(vertices[t[1]]), to_point(vertices[t[2]])))
+    if (!CGAL::collinear(m.in(vertices[t[0]]), m.in(vertices[t[1]]), m.in(vertices[t[2]])))
       solid_faces.push_back(fi);
   }
   if (solid_faces.empty()) throw std::invalid_argument("all facets have zero area");
@@ -194,7 +209,7 @@ void TriangleSurfaceIndex::build(const std::vector<Vec3>& vertices, const std::v
 TriangleSurfaceIndex::~TriangleSurfaceIndex() = default;
 
 int TriangleSurfaceIndex::side(const Vec3& p) const {
-  switch ((*impl_->side)(to_point(p))) {
+  switch ((*impl_->side)(impl_->in(p))) {
     case CGAL::ON_BOUNDED_SIDE: return 1;
     case CGAL::ON_BOUNDARY: return 0;
     default: return -1;
@@ -202,22 +217,27 @@ int TriangleSurfaceIndex::side(const Vec3& p) const {
 }
 
 Vec3 TriangleSurfaceIndex::closest_point(const Vec3& p, int* facet) const {
-  Nearest traits(p, impl_->tree.traits());
-  impl_->tree.traversal_with_priority(to_point(p), traits);
+  const Vec3 q = p * impl_->inv;
+  Nearest traits(q, impl_->tree.traits());
+  impl_->tree.traversal_with_priority(to_point(q), traits);
   if (facet) *facet = static_cast<int>(traits.face().idx());
-  return traits.closest();
+  return traits.closest() * impl_->scale;
 }
 
 void TriangleSurfaceIndex::facets_within(const Vec3& p, double reach, std::vector<int>& out) const {
   if (!(reach >= 0.0)) return;
-  WithinReach traits(p, reach * reach, impl_->tree.traits(), out);
-  impl_->tree.traversal(to_point(p), traits);
+  const Vec3 q = p * impl_->inv;
+  const double rq = reach * impl_->inv;
+  WithinReach traits(q, rq * rq, impl_->tree.traits(), out);
+  impl_->tree.traversal(to_point(q), traits);
 }
 
 bool TriangleSurfaceIndex::any_facet_closer_than(const Vec3& p, double distance) const {
   if (!(distance > 0.0)) return false;
-  AnyCloser traits(p, distance * distance, impl_->tree.traits());
-  impl_->tree.traversal(to_point(p), traits);
+  const Vec3 q = p * impl_->inv;
+  const double dq = distance * impl_->inv;
+  AnyCloser traits(q, dq * dq, impl_->tree.traits());
+  impl_->tree.traversal(to_point(q), traits);
   return traits.found();
 }
 
