@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/metrics/cell_list.hpp"
+#include "core/metrics/containment_check.hpp"
 #include "core/metrics/contacts.hpp"
 
 namespace fp {
@@ -100,7 +101,9 @@ ValidationReport validate_packing(const Packing<D>& packing, const Container<D>&
   // The length unit of a ball or pair: its (smaller) radius; r_min for a zero radius (already an issue).
   auto scale = [r_unit](double r) { return r > 0.0 ? r : (r_unit > 0.0 ? r_unit : 1.0); };
 
-  // Per ball: finiteness, radius range, container.
+  // Per ball: finiteness, radius range, container (through the check's own geometry, not the
+  // container's code).
+  const ContainmentCheck<D> containment(container);
   std::vector<double> finite_radii;
   finite_radii.reserve(packing.size());
   for (std::size_t n = 0; n < packing.size(); ++n) {
@@ -118,7 +121,7 @@ ValidationReport validate_packing(const Packing<D>& packing, const Container<D>&
       ++rep.radius_count;
       worst.add({"radius_out_of_range", i, -1, excess});
     }
-    const double out = (container.signed_distance(c) + r) / scale(r);
+    const double out = (containment.signed_distance(c, scale(r)) + r) / scale(r);
     rep.max_outside_rel = std::max(rep.max_outside_rel, out);
     if (out > overlap_tol_rel) {
       ++rep.outside_count;

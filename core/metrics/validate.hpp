@@ -1,6 +1,7 @@
 #pragma once
 // The independent check of a packing: every pair (through its own cell list, not the packer's
-// grid), every ball against the container, every radius against the requested distribution.
+// grid), every ball against the container (through its own distances, containment_check.hpp,
+// not the container's code), every radius against the requested distribution.
 // `frontpack pack` and `frontpack validate` give this one verdict: the figure the packer reports
 // must be the figure validate finds.
 #include <cstdint>
@@ -20,7 +21,7 @@ inline constexpr double kRadiiAlpha = 1e-3;
 
 struct ValidationIssue {
   /// "overlap": pair (i, j), i < j, value (ri + rj - d) / min(ri, rj);
-  /// "outside": ball i (j = -1), value (signed_distance(c) + r) / r;
+  /// "outside": ball i (j = -1), value (signed_distance(c) + r) / r (ContainmentCheck's distance);
   /// "radius_out_of_range": ball i, value radius_excess(dist, r) (radii_fit.hpp: relative
   ///   distance to the radii the law can produce; 1 for r <= 0 without a distribution);
   /// "non_finite": ball i with a NaN/inf centre or radius, value +inf.
@@ -54,12 +55,13 @@ struct ValidationReport {
 std::string describe(const ValidationIssue& issue);
 
 /// Checks a packing with the packer's own rules, on code of its own (a cell list, not the packer's
-/// grid). A pair overlaps when
+/// grid; containment_check.hpp, not the container's distance code). A pair overlaps when
 /// (ri + rj - d) > overlap_tol_rel * min(ri, rj) (the packer's allowance); a ball is outside
 /// when its centre is outside or its distance to the boundary is below r - overlap_tol_rel * r;
 /// with a distribution, a radius is out of range when radius_excess > kRadiusSlack and the radii
 /// fail when the radii_fit p-value is below radii_alpha; without one, only r <= 0 is an issue.
-/// An empty packing fails. Throws std::invalid_argument unless overlap_tol_rel >= 0.
+/// An empty packing fails. Throws std::invalid_argument unless overlap_tol_rel >= 0, and for a
+/// container kind without an independent check.
 template <int D>
 ValidationReport validate_packing(const Packing<D>& packing, const Container<D>& container,
                                   const RadiusDistribution* dist_or_null, double overlap_tol_rel = 1e-9,
