@@ -95,7 +95,7 @@ ShapeValidation validate_shapes(const ShapePacking<D>& packing, const Container<
     std::vector<std::uint64_t> counts(requested.size(), 0);
     for (const Particle<D>& p : P) {
       const auto t = static_cast<std::size_t>(p.template_id);
-      if (t >= requested.size()) throw std::invalid_argument("validate_shapes: a particle of an unknown template");
+      if (t >= requested.size()) throw std::invalid_argument("shape validation: a particle names a template that was not requested");
       ++counts[t];
       if (!requested[t].size) continue;
       if (radius_excess(*requested[t].size, p.size) > kRadiusSlack) ++v.sizes_out_of_range;
