@@ -63,9 +63,10 @@ int run(int argc, char** argv) {
   validate_cmd->add_option("--scene", check.scene_path, "the scene the packing fills")->required();
   validate_cmd->add_option("--format", check.format, "format of PACKING (default: from its extension)");
   validate_cmd->add_option("--tolerance", check.tolerance,
-                           "overlap allowed, relative to r_min (default: the scene's contact_tolerance)")
+                           "overlap allowed, relative to the smaller radius of each pair (default: the scene's contact_tolerance)")
       ->check(CLI::NonNegativeNumber);
-  validate_cmd->add_option("--ks-alpha", check.ks_alpha, "the radii fail when their K-S p-value is below this")
+  validate_cmd->add_option("--ks-alpha", check.ks_alpha, "level of the radii test (K-S; chi-square for a discrete law, exact match for a constant one): "
+                           "the radii fail when its p-value is below this (default 0.001, as pack)")
       ->check(CLI::Range(0.0, 1.0));
   validate_cmd->add_flag("-q,--quiet", check.quiet, "no report; the exit code only");
 

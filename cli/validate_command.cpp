@@ -14,30 +14,34 @@ template <int D>
 int validate(const Scene& scene, const Packing<D>& P, const ValidateCommandOptions& o) {
   const Container<D>& container = *scene.container<D>();
   const double tol = o.tolerance >= 0 ? o.tolerance : scene.packer.contact_tolerance;
-  const ValidationReport r = validate_packing<D>(P, container, scene.radii.get(), tol);
-  // An empty packing has no radii to test: that is not evidence against the distribution.
-  const bool radii_ok = P.size() < 2 || !(r.radii_ks_pvalue < o.ks_alpha);
-  const bool ok = r.ok && radii_ok;
+  // The verdict of `frontpack pack`: same function, same tolerance, same radii test and level.
+  const ValidationReport r = validate_packing<D>(P, container, scene.radii.get(), tol, o.ks_alpha);
   if (!o.quiet) {
     std::printf("frontpack validate   %s   against %s (%dD)\n", o.packing_path.c_str(), scene.source_path.c_str(), D);
     std::printf("  container      %s\n", container.describe().c_str());
     std::printf("  particles      %llu; %llu pairs checked\n", static_cast<unsigned long long>(r.particles),
                 static_cast<unsigned long long>(r.pairs_checked));
-    std::printf("  overlaps       %llu beyond %.3g r_min   (max overlap %.3g r_min)\n",
+    if (r.empty()) {
+      std::printf("  result         FAILED: the packing holds no particles\n");
+      return 3;
+    }
+    std::printf("  overlaps       %llu beyond %.3g of the smaller radius   (max overlap %.3g of the smaller radius)\n",
                 static_cast<unsigned long long>(r.overlap_count), tol, r.max_overlap_rel);
     std::printf("  outside        %llu   (max protrusion %.3g r)\n", static_cast<unsigned long long>(r.outside_count),
                 r.max_outside_rel);
-    std::printf("  radii          %llu outside [%.6g, %.6g]; K-S D = %.4g, p = %.3g (fails below %.3g)\n",
-                static_cast<unsigned long long>(r.radius_count), scene.radii->r_min(), scene.radii->r_max(),
-                r.radii_ks_statistic, r.radii_ks_pvalue, o.ks_alpha);
+    std::printf("  radii          %llu out of range of %s; %s (fails below %.3g)\n",
+                static_cast<unsigned long long>(r.radius_count), scene.radii->describe().c_str(),
+                r.radii.describe().c_str(), o.ks_alpha);
     if (r.non_finite_count) std::printf("  non-finite     %llu\n", static_cast<unsigned long long>(r.non_finite_count));
-    std::printf("  result         %s\n", ok ? "ok" : "FAILED");
+    std::printf("  result         %s\n", r.ok ? "ok" : "FAILED");
     if (!r.worst.empty()) {
-      std::printf("  worst offenders (ids as in the file, values relative to r_min for pairs, to r otherwise):\n");
+      std::printf("  worst offenders (ids as in the file; overlaps relative to the smaller radius, others to r):\n");
       for (const ValidationIssue& w : r.worst) std::printf("    %s\n", describe(w).c_str());
     }
+  } else if (r.empty()) {
+    std::fprintf(stderr, "frontpack: error: %s holds no particles\n", o.packing_path.c_str());
   }
-  return ok ? 0 : 3;
+  return r.ok ? 0 : 3;
 }
 
 }  // namespace
@@ -49,6 +53,13 @@ int run_validate_command(const ValidateCommandOptions& o) {
     in = read_packing_input(o.packing_path, o.format, o.scene_path);
   } catch (...) {  // the scene parser and the readers name file, line and key
     return report_failure(2);
+  }
+  if (!in.scene->particle_templates.empty()) {
+    std::fprintf(stderr,
+                 "frontpack: error: %s describes non-spherical particles; validate checks packings of spheres and "
+                 "disks (frontpack pack checks every packing of shapes it makes)\n",
+                 o.scene_path.c_str());
+    return 2;
   }
   try {
     const Activity doing("validating packing '" + o.packing_path + "'");

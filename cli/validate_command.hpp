@@ -3,18 +3,21 @@
 // scene it claims to fill (core/metrics/validate: its own cell list, not the packer's grid).
 #include <string>
 
+#include "core/metrics/validate.hpp"
+
 namespace fp {
 
 struct ValidateCommandOptions {
   std::string packing_path;
   std::string scene_path;
   std::string format;          ///< --format of PACKING; default from its extension
-  double tolerance = -1;       ///< overlap allowance relative to r_min; < 0: the scene's contact_tolerance
-  double ks_alpha = 1e-3;      ///< the radii fail the check when their K-S p-value is below this
+  double tolerance = -1;       ///< overlap allowance relative to min(ri, rj); < 0: the scene's contact_tolerance
+  double ks_alpha = kRadiiAlpha;  ///< the radii fail when their test's p-value (radii_fit.hpp) is below this
   bool quiet = false;
 };
 
-/// Returns the exit code: 0 every check holds, 2 bad input, 3 the packing fails a check.
+/// Returns the exit code: 0 every check holds, 2 bad input (also a scene of non-spherical
+/// particles), 3 the packing fails a check (also a packing without particles).
 int run_validate_command(const ValidateCommandOptions& options);
 
 }  // namespace fp

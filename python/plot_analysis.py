@@ -64,9 +64,9 @@ def radii(cdf_path, a, out_dir):
     ax1.set_ylabel("probability density")
     ax2.step(r, emp, where="post", label="placed")
     if req and all(v is not None for v in req):
-        ax2.plot(r, req, "--", label="requested")
-        ks = a["radii_ks"]
-        ax2.set_title("K-S D = %.4g, p = %.3g" % (ks["d"], ks["p"]))
+        ax2.step(r, req, "--", where="post", label="requested")  # a step CDF stays one for a discrete law
+        fit = a["radii_fit"]
+        ax2.set_title("%s: %.4g, p = %.3g" % (fit["test"], fit["statistic"], fit["p"]))
     ax2.set_xlabel("radius")
     ax2.set_ylabel("CDF")
     ax2.legend()

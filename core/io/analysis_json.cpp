@@ -19,6 +19,16 @@ Json ks_fields(Json j, const KsResult& k) {
   return j;
 }
 
+Json radii_fit_fields(Json j, const RadiiFit& f) {
+  j["test"] = f.test;
+  j["n"] = f.n;
+  j["statistic"] = f.statistic;
+  j["dof"] = f.dof;
+  j["p"] = f.p;
+  j["off_support"] = f.off_support;
+  return j;
+}
+
 Json region_json(const RegionVolumeFraction& v) {
   return Json{{"shrink", v.shrink},
               {"value", v.vf.value},
@@ -43,6 +53,7 @@ Json validation_json(const ValidationReport& v) {
     worst.push_back(Json{{"kind", w.kind}, {"i", w.i}, {"j", w.j}, {"value_rel", w.value_rel}});
   return Json{{"ok", v.ok},
               {"tolerance", v.tolerance},
+              {"radii_alpha", v.radii_alpha},
               {"particles", v.particles},
               {"pairs_checked", v.pairs_checked},
               {"max_overlap_rel", v.max_overlap_rel},
@@ -52,8 +63,7 @@ Json validation_json(const ValidationReport& v) {
               {"radius_count", v.radius_count},
               {"non_finite_count", v.non_finite_count},
               {"worst", worst},
-              {"radii_ks_statistic", v.radii_ks_statistic},
-              {"radii_ks_pvalue", v.radii_ks_pvalue}};
+              {"radii", radii_fit_fields(Json::object(), v.radii)}};
 }
 
 }  // namespace
@@ -101,7 +111,7 @@ std::string analysis_json(const PackingAnalysis& a, bool include_timings) {
     axes.back()["below_critical"] = ks.below_critical();
   }
   j["homogeneity"] = Json{{"margin", a.homogeneity.margin}, {"axes", axes}};
-  j["radii_ks"] = ks_fields(Json{{"distribution", a.distribution}}, a.radii_ks);
+  j["radii_fit"] = radii_fit_fields(Json{{"distribution", a.distribution}}, a.radii_fit);
 
   Json proj = Json::array();
   for (std::size_t k = 0; k < a.projections.ks.size(); ++k)

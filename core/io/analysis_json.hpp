@@ -16,13 +16,14 @@
 //   overlap {max_overlap_rel, max_contact_gap_rel, worst_pair: [i, j] or null}
 //   fabric {per_contact, per_particle}   (each {tensor: D x D, eigenvalues, count})
 //   homogeneity {margin, axes: [{axis, lo, hi, n, d, sqrt_n_d, p, below_critical}]}
-//   radii_ks {distribution, n, d, sqrt_n_d, p}
+//   radii_fit {distribution, test, n, statistic, dof, p, off_support}   (test: constant | chi-square | K-S)
 //   relative_projections {reference, bins, contacts, axes: [{axis, histogram, n, d, sqrt_n_d, p}]}
 //   rdf {mean_diameter, range, reference_margin, reference_particles, reference_measure {value,
 //        std_error}, density, r: [], g: []}
-//   validation (null when not run) {ok, tolerance, particles, pairs_checked, max_overlap_rel,
-//        max_outside_rel, overlap_count, outside_count, radius_count, non_finite_count,
-//        worst: [{kind, i, j, value_rel}], radii_ks_statistic, radii_ks_pvalue}
+//   validation (null when not run) {ok, tolerance, radii_alpha, particles, pairs_checked,
+//        max_overlap_rel (over min(ri, rj)), max_outside_rel, overlap_count, outside_count,
+//        radius_count, non_finite_count, worst: [{kind, i, j, value_rel}], radii {test, n,
+//        statistic, dof, p, off_support}}
 //   and, with include_timings, timings {name: seconds} (which differ from run to run).
 #include <string>
 

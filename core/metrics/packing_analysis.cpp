@@ -86,7 +86,7 @@ std::string PackingAnalysis::summary() const {
     line("K-S projections %c    D = %.4f, p = %.3g vs %s", axes[a], projections.ks[a].d, projections.ks[a].p,
          projections.reference.c_str());
   if (!distribution.empty())
-    line("K-S radii            D = %.4g, p = %.3g vs %s", radii_ks.d, radii_ks.p, distribution.c_str());
+    line("radii test           %s vs %s", radii_fit.describe().c_str(), distribution.c_str());
   if (!rdf.g.empty()) {
     const auto peak = std::max_element(rdf.g.begin(), rdf.g.end()) - rdf.g.begin();
     line("g(r)                 max %.3f at r = %.3f <d>, %llu reference particles", rdf.g[peak], rdf.r[peak],
@@ -151,12 +151,16 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
   timed(t, "homogeneity", [&] {
     a.homogeneity = centre_homogeneity(packing, container->bounds(), a.r_max);
     if (dist_or_null != nullptr) {
-      // The sample validate_packing tests: every ball with a finite centre and radius.
-      std::vector<double> sample;
-      for (std::size_t i = 0; i < packing.size(); ++i)
-        if (std::isfinite(packing.radii[i]) && packing.centers[i].allFinite()) sample.push_back(packing.radii[i]);
       a.distribution = dist_or_null->describe();
-      a.radii_ks = ks_one_sample(std::move(sample), [dist_or_null](double r) { return dist_or_null->cdf(r); });
+      if (a.validation) {
+        a.radii_fit = a.validation->radii;  // one test, one figure
+      } else {
+        // The sample validate_packing tests: every ball with a finite centre and radius.
+        std::vector<double> sample;
+        for (std::size_t i = 0; i < packing.size(); ++i)
+          if (std::isfinite(packing.radii[i]) && packing.centers[i].allFinite()) sample.push_back(packing.radii[i]);
+        a.radii_fit = radii_fit(std::move(sample), *dist_or_null);
+      }
     }
   });
 

@@ -8,6 +8,7 @@
 //   partial coordination z(xi) ......................... partial_coordination.hpp (paper 000 Sect. 3.2)
 //   fabric tensors ..................................... fabric.hpp (paper 000 Eq. 17, paper 002 Eq. 1)
 //   K-S of centre coordinates .......................... homogeneity.hpp (paper 002 Sect. 4)
+//   the radii against the requested distribution ....... radii_fit.hpp
 //   relative projections ............................... contact_normals.hpp (paper 002 Sect. 1)
 //   g(r) ............................................... radial_distribution.hpp (paper 000 Sect. 3.3)
 //   validation ......................................... validate.hpp
@@ -28,6 +29,7 @@
 #include "core/metrics/ks_result.hpp"
 #include "core/metrics/partial_coordination.hpp"
 #include "core/metrics/radial_distribution.hpp"
+#include "core/metrics/radii_fit.hpp"
 #include "core/metrics/validate.hpp"
 #include "core/sampling/radius_distribution.hpp"
 
@@ -71,7 +73,7 @@ struct PackingAnalysis {
   // Homogeneity and size distribution.
   CentreHomogeneity homogeneity;         ///< K-S of x, y (, z) against uniform, margin r_max
   std::string distribution;              ///< the requested one, "" when none
-  KsResult radii_ks;                     ///< finite radii against it, as validate tests them (NaN without one)
+  RadiiFit radii_fit;                    ///< finite radii against it: validate's own test (not computed without one)
 
   RadialDistribution rdf;
   std::optional<ValidationReport> validation;

@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "core/metrics/cell_list.hpp"
+#include "core/metrics/containment_check.hpp"
 #include "core/metrics/contacts.hpp"
-#include "core/sampling/ks_test.hpp"
 
 namespace fp {
 namespace {
@@ -57,13 +57,14 @@ std::string describe(const ValidationIssue& w) {
 
 std::string ValidationReport::summary() const {
   char buf[512];
+  if (empty()) return "validate: FAILED: the packing holds no particles";
   std::snprintf(buf, sizeof buf,
-                "validate: %s: %llu particles, %llu pairs checked, tol %.3g; max overlap %.3g r_min, "
+                "validate: %s: %llu particles, %llu pairs checked, tol %.3g; max overlap %.3g of the smaller radius, "
                 "max outside %.3g r",
                 ok ? "OK" : "FAILED", static_cast<unsigned long long>(particles),
                 static_cast<unsigned long long>(pairs_checked), tolerance, max_overlap_rel, max_outside_rel);
   std::string s = buf;
-  if (!ok) {
+  if (!worst.empty()) {
     std::snprintf(buf, sizeof buf, "\n  issues: %llu overlaps, %llu outside, %llu radii out of range, %llu non-finite",
                   static_cast<unsigned long long>(overlap_count), static_cast<unsigned long long>(outside_count),
                   static_cast<unsigned long long>(radius_count), static_cast<unsigned long long>(non_finite_count));
@@ -71,10 +72,11 @@ std::string ValidationReport::summary() const {
     s += "\n  worst:";
     for (std::size_t k = 0; k < worst.size() && k < 5; ++k) s += (k ? ", " : " ") + describe(worst[k]);
   }
-  if (std::isnan(radii_ks_statistic)) {
-    s += "\n  radii K-S: no distribution given";
+  if (!radii.computed()) {
+    s += "\n  radii test: no distribution given";
   } else {
-    std::snprintf(buf, sizeof buf, "\n  radii K-S: D = %.4g, p = %.3g", radii_ks_statistic, radii_ks_pvalue);
+    std::snprintf(buf, sizeof buf, "\n  radii %s (fails below %.3g)%s", radii.describe().c_str(), radii_alpha,
+                  radii_ok() ? "" : ": FAILED");
     s += buf;
   }
   return s;
@@ -82,21 +84,26 @@ std::string ValidationReport::summary() const {
 
 template <int D>
 ValidationReport validate_packing(const Packing<D>& packing, const Container<D>& container,
-                                  const RadiusDistribution* dist_or_null, double overlap_tol_rel) {
+                                  const RadiusDistribution* dist_or_null, double overlap_tol_rel, double radii_alpha) {
   if (!(overlap_tol_rel >= 0.0) || !std::isfinite(overlap_tol_rel))
     throw std::invalid_argument("validate_packing: overlap_tol_rel must be finite and >= 0");
+  if (!(radii_alpha >= 0.0 && radii_alpha <= 1.0))
+    throw std::invalid_argument("validate_packing: radii_alpha must be in [0, 1]");
   if (packing.centers.size() != packing.radii.size())
     throw std::invalid_argument("validate_packing: centers and radii differ in size");
 
   ValidationReport rep;
   rep.tolerance = overlap_tol_rel;
+  rep.radii_alpha = radii_alpha;
   rep.particles = packing.size();
   WorstIssues worst;
   const double r_unit = smallest_radius(packing);
+  // The length unit of a ball or pair: its (smaller) radius; r_min for a zero radius (already an issue).
+  auto scale = [r_unit](double r) { return r > 0.0 ? r : (r_unit > 0.0 ? r_unit : 1.0); };
 
-  // Per ball: finiteness, radius range, container.
-  const double lo = dist_or_null ? dist_or_null->r_min() * (1.0 - 1e-12) : 0.0;
-  const double hi = dist_or_null ? dist_or_null->r_max() * (1.0 + 1e-12) : std::numeric_limits<double>::infinity();
+  // Per ball: finiteness, radius range, container (through the check's own geometry, not the
+  // container's code).
+  const ContainmentCheck<D> containment(container);
   std::vector<double> finite_radii;
   finite_radii.reserve(packing.size());
   for (std::size_t n = 0; n < packing.size(); ++n) {
@@ -109,15 +116,12 @@ ValidationReport validate_packing(const Packing<D>& packing, const Container<D>&
       continue;
     }
     finite_radii.push_back(r);
-    if (dist_or_null ? (r < lo || r > hi) : !(r > 0.0)) {
+    const double excess = dist_or_null ? radius_excess(*dist_or_null, r) : (r > 0.0 ? 0.0 : 1.0);
+    if (dist_or_null ? excess > kRadiusSlack : excess > 0.0) {
       ++rep.radius_count;
-      double v = 1.0;
-      if (dist_or_null) v = r > hi ? (r - dist_or_null->r_max()) / dist_or_null->r_max()
-                                   : (dist_or_null->r_min() - r) / dist_or_null->r_min();
-      worst.add({"radius_out_of_range", i, -1, v});
+      worst.add({"radius_out_of_range", i, -1, excess});
     }
-    const double scale = r > 0.0 ? r : (r_unit > 0.0 ? r_unit : 1.0);
-    const double out = (container.signed_distance(c) + r) / scale;
+    const double out = (containment.signed_distance(c, scale(r)) + r) / scale(r);
     rep.max_outside_rel = std::max(rep.max_outside_rel, out);
     if (out > overlap_tol_rel) {
       ++rep.outside_count;
@@ -125,12 +129,13 @@ ValidationReport validate_packing(const Packing<D>& packing, const Container<D>&
     }
   }
 
-  // Every pair that can overlap (cell list over the finite, non-negative balls).
+  // Every pair that can overlap (cell list over the finite, non-negative balls), with the
+  // packer's allowance: tol * min(ri, rj).
   const CellList<D> cells(packing.centers, packing.radii, 0.0);
   cells.for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
     ++rep.pairs_checked;
     const double d = (packing.centers[i] - packing.centers[j]).norm();
-    const double overlap = (packing.radii[i] + packing.radii[j] - d) / r_unit;
+    const double overlap = (packing.radii[i] + packing.radii[j] - d) / scale(std::min(packing.radii[i], packing.radii[j]));
     rep.max_overlap_rel = std::max(rep.max_overlap_rel, overlap);
     if (overlap > overlap_tol_rel) {
       ++rep.overlap_count;
@@ -138,17 +143,16 @@ ValidationReport validate_packing(const Packing<D>& packing, const Container<D>&
     }
   });
 
-  if (dist_or_null && !finite_radii.empty()) {
-    const RadiusDistribution& dist = *dist_or_null;
-    rep.radii_ks_statistic = ks_statistic(std::move(finite_radii), [&dist](double r) { return dist.cdf(r); });
-    rep.radii_ks_pvalue = ks_pvalue(rep.radii_ks_statistic, rep.particles - rep.non_finite_count);
-  }
+  if (dist_or_null) rep.radii = radii_fit(std::move(finite_radii), *dist_or_null);
   rep.worst = std::move(worst).sorted();
-  rep.ok = rep.overlap_count + rep.outside_count + rep.radius_count + rep.non_finite_count == 0;
+  rep.ok = !rep.empty() && rep.overlap_count + rep.outside_count + rep.radius_count + rep.non_finite_count == 0 &&
+           rep.radii_ok();
   return rep;
 }
 
-template ValidationReport validate_packing<2>(const Packing<2>&, const Container<2>&, const RadiusDistribution*, double);
-template ValidationReport validate_packing<3>(const Packing<3>&, const Container<3>&, const RadiusDistribution*, double);
+template ValidationReport validate_packing<2>(const Packing<2>&, const Container<2>&, const RadiusDistribution*, double,
+                                             double);
+template ValidationReport validate_packing<3>(const Packing<3>&, const Container<3>&, const RadiusDistribution*, double,
+                                             double);
 
 }  // namespace fp

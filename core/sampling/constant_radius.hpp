@@ -16,6 +16,7 @@ class ConstantRadius final : public RadiusDistribution {
   double r_max() const override { return radius_; }
   double mean() const override { return radius_; }
   std::string describe() const override;
+  std::vector<std::pair<double, double>> atoms() const override { return {{radius_, 1.0}}; }
 
  private:
   double radius_;

@@ -57,6 +57,12 @@ double DiscreteRadius::cdf(double r) const {
   return cumulative_[static_cast<std::size_t>(it - radii_.begin()) - 1];
 }
 
+std::vector<std::pair<double, double>> DiscreteRadius::atoms() const {
+  std::vector<std::pair<double, double>> out;
+  for (std::size_t i = 0; i < radii_.size(); ++i) out.emplace_back(radii_[i], probabilities_[i]);
+  return out;
+}
+
 std::string DiscreteRadius::describe() const {
   std::string s = "discrete {";
   for (std::size_t i = 0; i < radii_.size(); ++i)

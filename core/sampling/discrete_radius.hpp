@@ -22,6 +22,7 @@ class DiscreteRadius final : public RadiusDistribution {
   double r_max() const override { return radii_.back(); }
   double mean() const override { return mean_; }
   std::string describe() const override;
+  std::vector<std::pair<double, double>> atoms() const override;
 
   /// Radii with positive weight, increasing, and their probabilities (summing to 1).
   const std::vector<double>& radii() const { return radii_; }

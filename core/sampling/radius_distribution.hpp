@@ -3,6 +3,8 @@
 // the packer needs r_min and r_max (grid cells, neighbour radius), as paper 002 requires.
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/sampling/rng.hpp"
 
@@ -21,6 +23,10 @@ class RadiusDistribution {
   virtual double mean() const = 0;
   /// One-line description, e.g. "uniform [0.01, 0.02]".
   virtual std::string describe() const = 0;
+  /// The point masses (radius, probability), radii increasing, probabilities summing to 1, of a
+  /// discrete law (constant: one); empty for a law with a density. The goodness-of-fit test of a
+  /// packing's radii depends on it: counts per value for a discrete law, K-S for a continuous one.
+  virtual std::vector<std::pair<double, double>> atoms() const { return {}; }
 };
 
 using RadiusDistributionPtr = std::shared_ptr<const RadiusDistribution>;

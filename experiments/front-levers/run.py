@@ -109,7 +109,7 @@ def run(case, label, lever, scene_path, seed):
                stop=r["info"]["stop_reason"],
                vf_ref=m["volume_fraction_reference_sphere"], vf_cont=m["volume_fraction_container"],
                coord=m["mean_coordination"], coord_walls=m["mean_coordination_with_walls"],
-               wall_contacts=c["wall_contacts"], ks_p=m["radii_ks_pvalue"], pack_s=pack,
+               wall_contacts=c["wall_contacts"], ks_p=m["radii_pvalue"], pack_s=pack,
                pps=n / pack, solves_per_particle=c["solves"] / n,
                radii_unplaced=c["radii_unplaced"], rattler_fraction=m["rattler_fraction"],
                pack_s_median=statistics.median(x[0]["timings"]["pack"] for x in reps),

@@ -116,7 +116,7 @@ def run(study, config, scene_path, seed, keep_csv=None, **extra):
                wall_s=min(x[1] for x in reps), peak_mb=max(x[2] for x in reps) / 1024.0,
                vf_ref=m["volume_fraction_reference_sphere"], vf_cont=m["volume_fraction_container"],
                coord=m["mean_coordination"], coord_walls=m["mean_coordination_with_walls"],
-               ks_p=m["radii_ks_pvalue"], pps=n / pack,
+               ks_p=m["radii_pvalue"], pps=n / pack,
                max_overlap=m["max_overlap_over_rmin"], solves_per_particle=c["solves"] / n,
                radii_unplaced=c["radii_unplaced"], max_neighbours=c["max_neighbours"],
                grid_mb=c["grid_bytes"] / 2**20, validation=r["info"]["validation"])

@@ -349,7 +349,7 @@ def main():
             "scene": key, "settings": settings, "seed": seed, "n": rec["n"],
             "vf_ref": m["volume_fraction_reference_sphere"], "vf_container": m["volume_fraction_container"],
             "r_ref": R, "z": m["mean_coordination"], "z_walls": m["mean_coordination_with_walls"],
-            "rattler_fraction": m["rattler_fraction"], "radii_ks_p": m["radii_ks_pvalue"],
+            "rattler_fraction": m["rattler_fraction"], "radii_ks_p": m["radii_pvalue"],
             "pack_s": t["pack"], "rate": m["particles_per_second"],
             "max_overlap_rmin": m["max_overlap_over_rmin"], "max_outside_r": m["max_outside_over_r"],
             "contacts": cnt["contacts"], "wall_contacts": cnt["wall_contacts"],

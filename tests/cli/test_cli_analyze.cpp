@@ -27,10 +27,10 @@ TEST_F(CliAnalyze, TableAndJsonWithTheScene) {
   const RunResult r = run_frontpack(dir, "analyze p.csv --scene s.yaml --json a.json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* row : {"VF reference ball", "VF container", "coordination z", "fabric per contact", "K-S centres x",
-                          "K-S radii", "g(r)", "validate: OK"})
+                          "radii test", "g(r)", "validate: OK"})
     EXPECT_NE(r.out.find(row), std::string::npos) << row << " not in\n" << r.out;
   const std::string json = read_bytes(dir.work() / "a.json");
-  for (const char* key : {"\"volume_fraction\"", "\"coordination\"", "\"fabric\"", "\"homogeneity\"", "\"radii_ks\"",
+  for (const char* key : {"\"volume_fraction\"", "\"coordination\"", "\"fabric\"", "\"homogeneity\"", "\"radii_fit\"",
                           "\"relative_projections\"", "\"rdf\"", "\"validation\""})
     EXPECT_NE(json.find(key), std::string::npos) << key;
   // Same packing, same bytes.

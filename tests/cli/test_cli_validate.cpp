@@ -1,6 +1,7 @@
 // `frontpack validate`: a packing written by `pack` passes in every format; planted defects (an
-// overlap of 1e-8 r_min, a particle 1e-8 r outside the container, a radius out of range, a
-// distorted size distribution) fail with exit 3 and the offender's id; bad input exits 2.
+// overlap of 1e-8 of the smaller radius, a particle 1e-8 r outside the container, a radius out of
+// range, a distorted size distribution) and a file without particles fail with exit 3 and the
+// offender's id; bad input (and a scene of non-spherical particles) exits 2.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -79,7 +80,7 @@ TEST_F(CliValidate, PlantedOverlapOfOneEMinus8IsCaughtWithItsIds) {
   }
   auto changed = rows;
   const double d = std::hypot(rows[b].x - rows[a].x, rows[b].y - rows[a].y, rows[b].z - rows[a].z);
-  const double target = rows[a].r + rows[b].r - 1e-8 * 0.01;  // r_min of the scene: 0.01
+  const double target = rows[a].r + rows[b].r - 1e-8 * std::min(rows[a].r, rows[b].r);
   const double s = target / d;
   changed[b].x = rows[a].x + s * (rows[b].x - rows[a].x);
   changed[b].y = rows[a].y + s * (rows[b].y - rows[a].y);
@@ -111,6 +112,27 @@ TEST_F(CliValidate, RadiusOutOfRangeAndDistortedDistributionFail) {
   const RunResult r2 = validate(shrunk);
   EXPECT_EQ(r2.exit_code, 3) << r2.out;
   EXPECT_NE(r2.out.find("K-S"), std::string::npos) << r2.out;
+}
+
+TEST_F(CliValidate, AFileWithoutParticlesFails) {
+  write_bytes(dir.work() / "e.csv", "id,x,y,z,r\n");
+  const RunResult r = run_frontpack(dir, "validate e.csv --scene s.yaml");
+  EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+  EXPECT_NE(r.out.find("FAILED: the packing holds no particles"), std::string::npos) << r.out;
+  write_bytes(dir.work() / "e.txt", "#format x_y_z_r\n");
+  const RunResult q = run_frontpack(dir, "validate e.txt --scene s.yaml -q");
+  EXPECT_EQ(q.exit_code, 3) << q.err;
+  EXPECT_NE(q.err.find("e.txt holds no particles"), std::string::npos) << q.err;
+}
+
+TEST_F(CliValidate, ASceneOfShapesIsRefused) {
+  write_bytes(dir.work() / "shapes.yaml",
+              "dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [0.2, 0.2, 0.2]}\n"
+              "particles:\n  - shape: spherocylinder\n    aspect_ratio: 0.5\n"
+              "    size: {distribution: uniform, min: 0.01, max: 0.02}\n");
+  const RunResult r = run_frontpack(dir, "validate p.csv --scene shapes.yaml");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("non-spherical"), std::string::npos) << r.err;
 }
 
 TEST_F(CliValidate, BadInputExitsTwo) {

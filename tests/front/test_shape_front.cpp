@@ -160,7 +160,9 @@ void check_packing(const PackRun<D>& run, const PackSetup<D>& setup, std::uint64
   EXPECT_LE(in.max_outside_rel, kCheckTol) << "particle " << in.worst;
   EXPECT_EQ(in.boundary_points_inside, 0u) << "e.g. into particle " << in.worst_boundary_particle;
   // The library's validation agrees.
-  const fp::ShapeValidation v = fp::validate_shapes<D>(P, *setup.container, run.res.gap_tolerance);
+  std::vector<fp::RequestedTemplate> requested;
+  for (const auto& t : run.templates) requested.push_back({t.size.get(), t.fraction});
+  const fp::ShapeValidation v = fp::validate_shapes<D>(P, *setup.container, run.res.gap_tolerance, requested);
   EXPECT_TRUE(v.ok) << v.summary();
   EXPECT_EQ(v.overlaps, 0u);
   EXPECT_EQ(v.outside, 0u);

@@ -25,7 +25,7 @@ TEST(AnalysisJson, LayoutAndValues) {
   for (const auto& item : j.items()) keys.push_back(item.key());
   EXPECT_EQ(keys, (std::vector<std::string>{"dimension", "particles", "radii", "container", "contact_tolerance",
                                             "volume_fraction", "coordination", "overlap", "fabric", "homogeneity",
-                                            "radii_ks", "relative_projections", "rdf", "validation"}));
+                                            "radii_fit", "relative_projections", "rdf", "validation"}));
   EXPECT_EQ(j["particles"], 1000);
   EXPECT_EQ(j["container"]["description"], box.describe());
   EXPECT_EQ(j["volume_fraction"]["curve"]["r_ref"].size(), 31u);
@@ -39,7 +39,8 @@ TEST(AnalysisJson, LayoutAndValues) {
   EXPECT_EQ(j["fabric"]["per_contact"]["tensor"][1][1].get<double>(), a.fabric.per_contact.tensor[4]);
   EXPECT_EQ(j["homogeneity"]["axes"][2]["axis"], "z");
   EXPECT_EQ(j["homogeneity"]["axes"][0]["below_critical"], false);
-  EXPECT_TRUE(j["radii_ks"]["d"].is_null());  // NaN: no distribution given
+  EXPECT_TRUE(j["radii_fit"]["statistic"].is_null());  // NaN: no distribution given
+  EXPECT_EQ(j["radii_fit"]["test"], "");
   EXPECT_EQ(j["relative_projections"]["axes"][0]["histogram"].size(), 20u);
   EXPECT_EQ(j["rdf"]["g"].size(), 100u);
   EXPECT_EQ(j["validation"]["ok"], true);

@@ -1,6 +1,7 @@
 // The whole analysis (packing_analysis.hpp: papers 000 Eqs. 15-17 and 002 Eqs. 1-2, Sect. 4-5)
 // on lattices whose figures are known in closed form,
-// without a container, with a distribution, and on an empty packing.
+// without a container, with a distribution, and on an empty packing; the verdict `pack` reads
+// from it is validate's, at the packer's allowance (tol x the smaller radius).
 #include "core/metrics/packing_analysis.hpp"
 
 #include <gtest/gtest.h>
@@ -8,6 +9,7 @@
 #include <cmath>
 
 #include "core/geometry/box_container.hpp"
+#include "core/sampling/discrete_radius.hpp"
 #include "core/sampling/uniform_radius.hpp"
 #include "tests/metrics/metrics_test_util.hpp"
 
@@ -56,7 +58,7 @@ TEST(PackingAnalysis, SimpleCubicInATightBox) {
 
   // Homogeneity: centres 0 .. n-1 against uniform on [0, n - 1] (margin r_max): D = 1/n.
   for (const KsResult& k : a.homogeneity.axis) EXPECT_NEAR(k.d, 1.0 / n, 1e-15);
-  EXPECT_TRUE(std::isnan(a.radii_ks.d));
+  EXPECT_FALSE(a.radii_fit.computed());
   EXPECT_EQ(a.distribution, "");
 
   // g(r): nothing closer than one diameter, 6 neighbours there.
@@ -101,10 +103,17 @@ TEST(PackingAnalysis, RadiiAgainstTheRequestedDistribution) {
   o.contact_tolerance = 0.25;  // the lattice has gaps; a wide tolerance makes a network
   const PackingAnalysis a = analyze_packing<3>(p, &box, &dist, o);
   EXPECT_EQ(a.distribution, dist.describe());
-  EXPECT_EQ(a.radii_ks.n, p.size());
-  EXPECT_EQ(a.radii_ks.d, a.validation->radii_ks_statistic);
-  EXPECT_EQ(a.radii_ks.p, a.validation->radii_ks_pvalue);
-  EXPECT_GT(a.radii_ks.p, 0.01);
+  EXPECT_EQ(a.radii_fit.n, p.size());
+  EXPECT_EQ(a.radii_fit.test, "K-S");
+  EXPECT_EQ(a.radii_fit.statistic, a.validation->radii.statistic);
+  EXPECT_EQ(a.radii_fit.p, a.validation->radii.p);
+  EXPECT_GT(a.radii_fit.p, 0.01);
+  // Without the validation the analysis runs the same test itself.
+  o.validate = false;
+  const PackingAnalysis b = analyze_packing<3>(p, &box, &dist, o);
+  EXPECT_FALSE(b.validation.has_value());
+  EXPECT_EQ(b.radii_fit.statistic, a.radii_fit.statistic);
+  EXPECT_EQ(b.radii_fit.p, a.radii_fit.p);
   EXPECT_EQ(a.contact_tolerance, 0.25);
   EXPECT_EQ(a.validation->tolerance, 0.25);
   EXPECT_GT(a.coordination.contacts, 0u);
@@ -126,6 +135,42 @@ TEST(PackingAnalysis, EmptyPacking) {
   EXPECT_EQ(boxed.vf_container.vf.value, 0.0);
   EXPECT_EQ(boxed.coordination.contacts, 0u);
   EXPECT_FALSE(boxed.summary().empty());
+}
+
+}  // namespace
+}  // namespace fp
+
+namespace fp {
+namespace {
+
+// `frontpack pack` takes its verdict from analyze_packing(...).validation: crafted pairs of
+// unequal radii overlapping by 0.8e-9 and 1.2e-9 of the smaller radius (0.5; r_min of the
+// packing 0.4, so 0.8e-9 is 1.0e-9 r_min) pass and fail there exactly as in validate_packing.
+TEST(PackingAnalysis, PacksVerdictIsValidatesAtTheSmallerRadius) {
+  const DiscreteRadius dist({{0.4, 1.0}, {0.5, 1.0}, {0.6, 1.0}});
+  const BoxContainer<3> box(Vec3::Zero(), Vec3::Constant(40.0));
+  auto crafted = [](double of_smaller) {
+    Packing<3> p;
+    for (int k = 0; k < 300; ++k) p.add(Vec3(2.0 + 2.0 * (k % 15), 2.0 + 2.0 * (k / 15 % 15), 2.0 + 2.0 * (k / 225)),
+                                        0.4 + 0.1 * (k % 3));
+    p.radii[1] = 0.5;  // x-neighbours 1 (0.5) and 2 (0.6), pushed together
+    p.centers[1] = p.centers[2] - Vec3(1.1 - of_smaller * 0.5, 0.0, 0.0);
+    return p;
+  };
+  AnalysisOptions o;
+  o.contact_tolerance = 1e-9;
+  for (const double of_smaller : {0.8e-9, 1.2e-9}) {
+    const Packing<3> p = crafted(of_smaller);
+    const PackingAnalysis a = analyze_packing<3>(p, &box, &dist, o);
+    const ValidationReport v = validate_packing<3>(p, box, &dist, 1e-9);
+    ASSERT_TRUE(a.validation.has_value());
+    EXPECT_EQ(a.validation->ok, of_smaller < 1e-9) << of_smaller << "\n" << a.validation->summary();
+    EXPECT_EQ(a.validation->ok, v.ok);
+    EXPECT_EQ(a.validation->max_overlap_rel, v.max_overlap_rel);
+    EXPECT_NEAR(v.max_overlap_rel, of_smaller, 1e-13);
+    EXPECT_EQ(a.radii_fit.test, "chi-square");
+    EXPECT_TRUE(a.validation->radii_ok());
+  }
 }
 
 }  // namespace

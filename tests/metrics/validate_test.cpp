@@ -1,4 +1,6 @@
-// The independent validator: planted defects of 1e-8 relative size are found and named.
+// The independent validator: planted defects of 1e-8 relative size are found and named; the
+// overlap allowance is the packer's (tol x the smaller radius of the pair); the radii test fits
+// the kind of law; an empty packing fails.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,6 +8,8 @@
 
 #include "core/geometry/box_container.hpp"
 #include "core/metrics/validate.hpp"
+#include "core/sampling/constant_radius.hpp"
+#include "core/sampling/discrete_radius.hpp"
 #include "core/sampling/uniform_radius.hpp"
 #include "tests/metrics/metrics_test_util.hpp"
 
@@ -25,18 +29,17 @@ TEST(Validate, CleanRandomPackingPasses) {
   EXPECT_TRUE(rep.worst.empty());
   EXPECT_EQ(rep.max_overlap_rel, 0.0);
   EXPECT_EQ(rep.max_outside_rel, 0.0);
-  EXPECT_GT(rep.radii_ks_pvalue, 0.001);
-  EXPECT_LT(rep.radii_ks_statistic, 0.03);
+  EXPECT_EQ(rep.radii.test, "K-S");
+  EXPECT_GT(rep.radii.p, 0.001);
+  EXPECT_LT(rep.radii.statistic, 0.03);
   EXPECT_NE(rep.summary().find("validate: OK"), std::string::npos);
 }
 
-TEST(Validate, FindsAPlantedOverlapOf1e8RMin) {
+TEST(Validate, FindsAPlantedOverlapOf1e8OfTheSmallerRadius) {
   auto p = clean_packing();
   const std::size_t i = 5000, j = 5001;  // x-neighbours on the lattice
-  double r_min = p.radii[0];
-  for (double r : p.radii) r_min = std::min(r_min, r);
   p.radii[i] = p.radii[j] = 0.9;
-  const double delta = 1e-8 * r_min;
+  const double delta = 1e-8 * 0.9;
   p.centers[i] = p.centers[j] - Vec3(1.8 - delta, 0.0, 0.0);
   // Brute force: this is the only overlapping pair.
   std::size_t overlapping = 0;
@@ -81,7 +84,7 @@ TEST(Validate, FindsAPlantedOverlapBetweenDisks) {
   auto p = test::jittered_lattice<2>(100, 0.5, 0.9, 0.05, 9, -50.0);
   const BoxContainer<2> box(Vec2::Constant(-52.0), Vec2::Constant(150.0));
   p.radii[1234] = p.radii[1334] = 0.7;  // y-neighbours
-  p.centers[1334] = p.centers[1234] + Vec2(0.0, 1.4 - 1e-8 * 0.5);
+  p.centers[1334] = p.centers[1234] + Vec2(0.0, 1.4 - 1e-8 * 0.7);
   const ValidationReport rep = validate_packing<2>(p, box, nullptr);
   EXPECT_EQ(rep.overlap_count, 1u);
   ASSERT_FALSE(rep.worst.empty());
@@ -100,18 +103,109 @@ TEST(Validate, RadiiAgainstTheDistribution) {
   EXPECT_EQ(rep.worst[0].kind, "radius_out_of_range");
   EXPECT_EQ(rep.worst[0].i, 10);
   EXPECT_NEAR(rep.worst[0].value_rel, 0.05 / 0.9, 1e-12);
-  // Radii drawn from U[0.5, 0.9] checked against U[0.5, 1.3]: K-S rejects them.
+  // Radii drawn from U[0.5, 0.9] checked against U[0.5, 1.3]: K-S rejects them, and that is a
+  // failure of the verdict (the one `pack` gives too), at the default level and at 1e-10.
   const UniformRadius wider(0.5, 1.3);
   const ValidationReport ks = validate_packing<3>(clean_packing(), clean_box(), &wider);
-  EXPECT_TRUE(ks.ok);  // K-S is reported, not a failure
-  EXPECT_GT(ks.radii_ks_statistic, 0.25);
-  EXPECT_LT(ks.radii_ks_pvalue, 1e-10);
-  // Without a distribution only non-positive radii are flagged, and K-S is not computed.
+  EXPECT_FALSE(ks.ok);
+  EXPECT_FALSE(ks.radii_ok());
+  EXPECT_TRUE(ks.worst.empty());  // nothing else is wrong
+  EXPECT_EQ(ks.radii.test, "K-S");
+  EXPECT_GT(ks.radii.statistic, 0.25);
+  EXPECT_LT(ks.radii.p, 1e-10);
+  EXPECT_NE(ks.summary().find("FAILED"), std::string::npos) << ks.summary();
+  EXPECT_FALSE(validate_packing<3>(clean_packing(), clean_box(), &wider, 1e-9, 1e-10).ok);
+  EXPECT_TRUE(validate_packing<3>(clean_packing(), clean_box(), &wider, 1e-9, 0.0).ok);  // level 0: never rejects
+  // Without a distribution only non-positive radii are flagged, and no radii test is run.
   auto q = clean_packing();
   q.radii[3] = 0.0;
   const ValidationReport none = validate_packing<3>(q, clean_box(), nullptr);
   EXPECT_EQ(none.radius_count, 1u);
-  EXPECT_TRUE(std::isnan(none.radii_ks_statistic));
+  EXPECT_FALSE(none.radii.computed());
+  EXPECT_TRUE(std::isnan(none.radii.statistic));
+}
+
+// The issue's case: a pair overlapping by 1.27e-9 r_min is 8.0e-10 of its smaller radius, which
+// the packer allows at tol 1e-9; 1.2e-9 of the smaller radius is beyond it.
+TEST(Validate, OverlapAllowanceIsTolTimesTheSmallerRadius) {
+  auto p = clean_packing();
+  const std::size_t i = 5000, j = 5001;  // x-neighbours on the lattice
+  double r_min = 1e300;
+  for (double r : p.radii) r_min = std::min(r_min, r);
+  ASSERT_LT(r_min, 0.55);
+  p.radii[i] = 0.8;
+  p.radii[j] = 0.875;
+  auto with_overlap = [&](double of_smaller) {
+    auto q = p;
+    q.centers[i] = q.centers[j] - Vec3(0.8 + 0.875 - of_smaller * 0.8, 0.0, 0.0);
+    return validate_packing<3>(q, clean_box(), nullptr, 1e-9);
+  };
+  const ValidationReport allowed = with_overlap(0.8e-9);
+  EXPECT_TRUE(allowed.ok) << allowed.summary();
+  EXPECT_NEAR(allowed.max_overlap_rel, 0.8e-9, 1e-12);
+  EXPECT_GT(allowed.max_overlap_rel * 0.8 / r_min, 1e-9);  // beyond tol x r_min: the old rule failed it
+  const ValidationReport refused = with_overlap(1.2e-9);
+  EXPECT_FALSE(refused.ok);
+  EXPECT_EQ(refused.overlap_count, 1u);
+  ASSERT_EQ(refused.worst.size(), 1u);
+  EXPECT_NEAR(refused.worst[0].value_rel, 1.2e-9, 1e-12);
+}
+
+// A constant law: every radius must be the value (within 1e-12); counts say nothing more.
+TEST(Validate, ConstantRadiiPassOnlyWhenEveryRadiusIsTheValue) {
+  auto lat = test::simple_cubic(8, 1.0, Vec3(0, 0, 0));
+  const BoxContainer<3> box(Vec3::Constant(-0.5), Vec3::Constant(7.5));
+  const ConstantRadius dist(0.5);
+  const ValidationReport rep = validate_packing<3>(lat.packing, box, &dist);
+  EXPECT_TRUE(rep.ok) << rep.summary();
+  EXPECT_EQ(rep.radii.test, "constant");
+  EXPECT_EQ(rep.radii.p, 1.0);
+  EXPECT_EQ(rep.radii.statistic, 0.0);
+  lat.packing.radii[17] = 0.5 * (1 - 1e-13);  // within the slack
+  EXPECT_TRUE(validate_packing<3>(lat.packing, box, &dist).ok);
+  lat.packing.radii[17] = 0.5 * (1 - 1e-9);  // a different radius: named, and the test fails
+  const ValidationReport off = validate_packing<3>(lat.packing, box, &dist);
+  EXPECT_FALSE(off.ok);
+  EXPECT_EQ(off.radius_count, 1u);
+  ASSERT_EQ(off.worst.size(), 1u);
+  EXPECT_EQ(off.worst[0].kind, "radius_out_of_range");
+  EXPECT_EQ(off.worst[0].i, 17);
+  EXPECT_NEAR(off.worst[0].value_rel, 1e-9, 1e-15);
+  EXPECT_EQ(off.radii.off_support, 1u);
+  EXPECT_EQ(off.radii.p, 0.0);
+}
+
+// A discrete law: chi-square on the counts per value. The issue's 332/350 mix of a 50/50 law
+// passes (X2 = 0.475, p = 0.49); 260/422 fails (X2 = 38.5, p = 5.5e-10); a radius between the
+// values is out of range.
+TEST(Validate, DiscreteRadiiAreTestedOnTheirCounts) {
+  const DiscreteRadius dist({{0.4, 1.0}, {0.5, 1.0}});
+  auto mix = [](int small, int large) {
+    Packing<3> p;
+    for (int k = 0; k < small + large; ++k)
+      p.add(Vec3(1.0 + (k % 30), 1.0 + (k / 30) % 30, 1.0 + k / 900), k < small ? 0.4 : 0.5);
+    return p;
+  };
+  const BoxContainer<3> box(Vec3::Zero(), Vec3::Constant(32.0));
+  const ValidationReport even = validate_packing<3>(mix(332, 350), box, &dist);
+  EXPECT_TRUE(even.ok) << even.summary();
+  EXPECT_EQ(even.radii.test, "chi-square");
+  EXPECT_EQ(even.radii.dof, 1);
+  EXPECT_NEAR(even.radii.statistic, 2.0 * 81.0 / 341.0, 1e-12);
+  EXPECT_NEAR(even.radii.p, 0.4906, 1e-4);
+  const ValidationReport skewed = validate_packing<3>(mix(260, 422), box, &dist);
+  EXPECT_FALSE(skewed.ok);
+  EXPECT_TRUE(skewed.worst.empty());
+  EXPECT_LT(skewed.radii.p, 1e-9);
+  auto between = mix(332, 350);
+  between.radii[5] = 0.45;
+  const ValidationReport off = validate_packing<3>(between, box, &dist);
+  EXPECT_FALSE(off.ok);
+  EXPECT_EQ(off.radius_count, 1u);
+  ASSERT_FALSE(off.worst.empty());
+  EXPECT_EQ(off.worst[0].i, 5);
+  EXPECT_NEAR(off.worst[0].value_rel, 0.05 / 0.4, 1e-12);  // to the nearest value, 0.4
+  EXPECT_EQ(off.radii.p, 0.0);
 }
 
 TEST(Validate, NonFiniteBallsAreIssuesAndTheRestIsStillChecked) {
@@ -151,10 +245,14 @@ TEST(Validate, TouchingLatticeAtOffset1e6HasNoFalseOverlap) {
   EXPECT_GE(rep.pairs_checked, 3u * 20 * 20 * 19);  // every touching pair is a candidate
 }
 
-TEST(Validate, EmptyPackingIsValid) {
+TEST(Validate, EmptyPackingFails) {
   const ValidationReport rep = validate_packing<3>(Packing<3>{}, clean_box(), nullptr);
-  EXPECT_TRUE(rep.ok);
+  EXPECT_FALSE(rep.ok);
+  EXPECT_TRUE(rep.empty());
   EXPECT_EQ(rep.pairs_checked, 0u);
+  EXPECT_NE(rep.summary().find("no particles"), std::string::npos) << rep.summary();
+  const UniformRadius dist(0.5, 0.9);
+  EXPECT_FALSE(validate_packing<3>(Packing<3>{}, clean_box(), &dist).ok);
   EXPECT_THROW(validate_packing<3>(Packing<3>{}, clean_box(), nullptr, -1.0), std::invalid_argument);
 }
 

@@ -1,0 +1,92 @@
+#include "core/sampling/chi_square_test.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace fp {
+namespace {
+
+// Regularised lower incomplete gamma P(a, x) by its series, for x < a + 1 (Numerical Recipes 6.2).
+double gamma_p_series(double a, double x) {
+  double term = 1.0 / a, sum = term;
+  for (int k = 1; k < 1000; ++k) {
+    term *= x / (a + k);
+    sum += term;
+    if (std::abs(term) < std::abs(sum) * 1e-17) break;
+  }
+  return sum * std::exp(-x + a * std::log(x) - std::lgamma(a));
+}
+
+// Regularised upper incomplete gamma Q(a, x) by its continued fraction (modified Lentz), for
+// x >= a + 1: computed directly, so tiny p-values keep their relative accuracy.
+double gamma_q_fraction(double a, double x) {
+  constexpr double kTiny = 1e-300;
+  double b = x + 1.0 - a, c = 1.0 / kTiny, d = 1.0 / b, h = d;
+  for (int i = 1; i < 1000; ++i) {
+    const double an = -i * (i - a);
+    b += 2.0;
+    d = an * d + b;
+    if (std::abs(d) < kTiny) d = kTiny;
+    c = b + an / c;
+    if (std::abs(c) < kTiny) c = kTiny;
+    d = 1.0 / d;
+    const double delta = d * c;
+    h *= delta;
+    if (std::abs(delta - 1.0) < 1e-16) break;
+  }
+  return std::exp(-x + a * std::log(x) - std::lgamma(a)) * h;
+}
+
+}  // namespace
+
+double chi_square_survival(double x, int dof) {
+  if (dof < 1) throw std::invalid_argument("chi_square_survival: dof must be >= 1");
+  if (std::isnan(x)) throw std::invalid_argument("chi_square_survival: x is NaN");
+  if (!(x > 0.0)) return 1.0;
+  if (std::isinf(x)) return 0.0;
+  const double a = 0.5 * dof, h = 0.5 * x;
+  return h < a + 1.0 ? 1.0 - gamma_p_series(a, h) : gamma_q_fraction(a, h);
+}
+
+ChiSquareResult chi_square_counts(const std::vector<std::uint64_t>& observed, const std::vector<double>& probabilities) {
+  if (observed.size() != probabilities.size())
+    throw std::invalid_argument("chi_square_counts: observed and probabilities differ in size");
+  std::uint64_t total = 0;
+  for (const std::uint64_t o : observed) total += o;
+  if (total == 0) throw std::invalid_argument("chi_square_counts: the sample is empty");
+  for (const double p : probabilities)
+    if (!(p > 0.0) || !std::isfinite(p)) throw std::invalid_argument("chi_square_counts: probabilities must be > 0");
+  const double n = static_cast<double>(total);
+
+  // Pool adjacent classes until each expects >= 5; a short tail joins the last pooled class.
+  std::vector<double> obs, expd;
+  double o_acc = 0.0, e_acc = 0.0;
+  for (std::size_t k = 0; k < observed.size(); ++k) {
+    o_acc += static_cast<double>(observed[k]);
+    e_acc += n * probabilities[k];
+    if (e_acc >= 5.0) {
+      obs.push_back(o_acc);
+      expd.push_back(e_acc);
+      o_acc = e_acc = 0.0;
+    }
+  }
+  if (e_acc > 0.0 || o_acc > 0.0) {
+    if (obs.empty()) {
+      obs.push_back(o_acc);
+      expd.push_back(e_acc);
+    } else {
+      obs.back() += o_acc;
+      expd.back() += e_acc;
+    }
+  }
+
+  ChiSquareResult r;
+  r.classes = obs.size();
+  r.dof = static_cast<int>(r.classes) - 1;
+  if (r.dof == 0) return r;  // one class: its count is n whatever the law, no evidence either way
+  for (std::size_t k = 0; k < obs.size(); ++k) r.statistic += (obs[k] - expd[k]) * (obs[k] - expd[k]) / expd[k];
+  r.p = chi_square_survival(r.statistic, r.dof);
+  return r;
+}
+
+}  // namespace fp

@@ -1,0 +1,90 @@
+// One verdict: `frontpack pack` and `frontpack validate` agree on packings of every distribution
+// kind, in 2D and 3D (each radii test fits its kind: an exact match for a constant radius,
+// chi-square for a discrete mix, K-S for a continuous law), and on the crafted
+// overlaps of 0.8e-9 and 1.2e-9 of the smaller radius.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <tuple>
+
+#include "cli_test_util.hpp"
+
+namespace fptest {
+namespace {
+
+struct Kind {
+  const char* name;
+  const char* radius;  // the scene's `radius:` mapping
+  const char* test;    // the radii test validate names
+};
+
+const Kind kKinds[] = {
+    {"constant", "{distribution: constant, value: 0.015}", "constant"},
+    {"uniform", "{distribution: uniform, min: 0.01, max: 0.02}", "K-S"},
+    {"normal", "{distribution: normal, mean: 0.015, std: 0.003, min: 0.01, max: 0.02}", "K-S"},
+    {"lognormal", "{distribution: lognormal, median: 0.013, sigma: 0.3, min: 0.008, max: 0.02}", "K-S"},
+    {"discrete", "{distribution: discrete, values: [[0.01, 1], [0.015, 1]]}", "chi-square"},
+    {"histogram", "{distribution: histogram, edges: [0.01, 0.012, 0.02], weights: [1, 2]}", "K-S"},
+    {"gradation", "{distribution: gradation, curve: [[0.02, 0], [0.03, 40], [0.04, 100]], basis: mass}", "K-S"},
+};
+
+std::string scene_text(int dim, const Kind& k) {
+  const std::string container = dim == 3 ? "{type: box, min: [0, 0, 0], max: [0.2, 0.2, 0.2]}"
+                                         : "{type: rectangle, min: [0, 0], max: [0.4, 0.4]}";
+  return "dimension: " + std::to_string(dim) + "\nseed: 5\ncontainer: " + container +
+         "\nparticles: {radius: " + k.radius + "}\n";
+}
+
+class CliVerdict : public ::testing::TestWithParam<std::tuple<int, int>> {};
+
+TEST_P(CliVerdict, PackAndValidateAgree) {
+  const int dim = std::get<0>(GetParam());
+  const Kind& k = kKinds[std::get<1>(GetParam())];
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", scene_text(dim, k));
+  const RunResult p = run_frontpack(dir, "pack s.yaml -o p.csv");
+  ASSERT_EQ(p.exit_code, 0) << p.out << p.err;
+  EXPECT_NE(p.out.find("validation     ok"), std::string::npos) << p.out;
+  EXPECT_NE(p.out.find(std::string("radii test           ") + k.test), std::string::npos) << p.out;
+  EXPECT_GT(lines_of(read_bytes(dir.work() / "p.csv")).size(), 80u);
+  const RunResult v = run_frontpack(dir, "validate p.csv --scene s.yaml");
+  EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
+  EXPECT_NE(v.out.find("result         ok"), std::string::npos) << v.out;
+  EXPECT_NE(v.out.find(std::string("; ") + k.test), std::string::npos) << v.out;
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryKind, CliVerdict, ::testing::Combine(::testing::Values(2, 3), ::testing::Range(0, 7)),
+                         [](const auto& info) {
+                           return std::string(kKinds[std::get<1>(info.param)].name) + "_" +
+                                  std::to_string(std::get<0>(info.param)) + "D";
+                         });
+
+// Three balls in U[0.01, 0.02]: an isolated one of radius 0.011 (r_min) and a pair of radii 0.016
+// and 0.019 overlapping by `of_smaller` x 0.016. At 0.8e-9 that is 1.16e-9 r_min: the packer
+// allows it (tol 1e-9 x min(ri, rj)), so validate must too.
+std::string crafted_csv(double of_smaller) {
+  const double ra = 0.016, rb = 0.019;
+  const double d = ra + rb - of_smaller * ra;
+  char buf[400];
+  std::snprintf(buf, sizeof buf, "id,x,y,z,r\n0,%.17g,0.1,0.1,%.17g\n1,%.17g,0.1,0.1,%.17g\n2,0.03,0.03,0.03,0.011\n",
+                0.05, ra, 0.05 + d, rb);
+  return buf;
+}
+
+TEST(CliVerdictCrafted, OverlapAllowanceIsTolTimesTheSmallerRadius) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", scene_text(3, kKinds[1]));
+  write_bytes(dir.work() / "allowed.csv", crafted_csv(0.8e-9));
+  const RunResult ok = run_frontpack(dir, "validate allowed.csv --scene s.yaml");
+  EXPECT_EQ(ok.exit_code, 0) << ok.out << ok.err;
+  write_bytes(dir.work() / "beyond.csv", crafted_csv(1.2e-9));
+  const RunResult bad = run_frontpack(dir, "validate beyond.csv --scene s.yaml");
+  EXPECT_EQ(bad.exit_code, 3) << bad.out;
+  EXPECT_NE(bad.out.find("overlap 0-1: 1.2e-09"), std::string::npos) << bad.out;
+  // --tolerance is relative to the smaller radius too.
+  EXPECT_EQ(run_frontpack(dir, "validate beyond.csv --scene s.yaml --tolerance 1.3e-9 -q").exit_code, 0);
+}
+
+}  // namespace
+}  // namespace fptest
