@@ -91,6 +91,10 @@ ValidationReport validate_packing(const Packing<D>& packing, const Container<D>&
     throw std::invalid_argument("validate_packing: radii_alpha must be in [0, 1]");
   if (packing.centers.size() != packing.radii.size())
     throw std::invalid_argument("validate_packing: centers and radii differ in size");
+  // Both must be in the same local frame (core/geometry/local_frame.hpp): the check works on
+  // coordinates relative to the container, never on absolute ones.
+  if (packing.origin != container.origin())
+    throw std::invalid_argument("validate_packing: the packing and the container are in different frames");
 
   ValidationReport rep;
   rep.tolerance = overlap_tol_rel;

@@ -147,7 +147,9 @@ void expect_shape_refused(const std::string& text, int line, const std::string& 
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("bad.yaml:" + std::to_string(line) + ":"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("key '" + key + "'"), std::string::npos) << r.err;
-  if (!also.empty()) EXPECT_NE(r.err.find(also), std::string::npos) << r.err;
+  if (!also.empty()) {
+    EXPECT_NE(r.err.find(also), std::string::npos) << r.err;
+  }
   EXPECT_EQ(r.out, "");
   EXPECT_EQ(listing(dir.work()), before);
 }

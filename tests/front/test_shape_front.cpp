@@ -448,7 +448,9 @@ TEST(ShapeChecks, DetectOverlapsAndProtrusions) {
       B.pose.position = a_ext - b_off - 1e-3 * Vec3::UnitX();
       const PairCheck over = check_pair(A, B, dirs, 1e-7);
       EXPECT_LT(over.gap_lower, -1e-4) << over.method;
-      if (T[a].family == "ellipsoid") EXPECT_GT(over.intrusion, 0.0);
+      if (T[a].family == "ellipsoid") {
+        EXPECT_GT(over.intrusion, 0.0);
+      }
       B.pose.position = a_ext - b_off + 1e-3 * Vec3::UnitX();
       const PairCheck apart = check_pair(A, B, dirs, 1e-7);
       EXPECT_EQ(apart.intrusion, 0.0);

@@ -55,9 +55,12 @@ TEST(PointTriangle, MatchesTheReferenceDistanceAndLiesOnTheTriangle) {
     EXPECT_NEAR(q.distance, testref::triangle_distance(p, a, b, c), 1e-14);
     EXPECT_NEAR((p - q.point).norm(), q.distance, 1e-14);
     const Vec3 n = (b - a).cross(c - a);
-    if (q.feature.kind == TriangleFeature::Face) EXPECT_NEAR((q.point - a).dot(n.normalized()), 0.0, 1e-14);
-    if (q.feature.kind == TriangleFeature::Vertex)
+    if (q.feature.kind == TriangleFeature::Face) {
+      EXPECT_NEAR((q.point - a).dot(n.normalized()), 0.0, 1e-14);
+    }
+    if (q.feature.kind == TriangleFeature::Vertex) {
       EXPECT_EQ(q.point, (q.feature.index == 0 ? a : q.feature.index == 1 ? b : c));
+    }
   }
   // Degenerate: three collinear points are their segments.
   const TriangleClosest s = closest_on_triangle(Vec3(0.5, 1, 0), Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0));
@@ -104,9 +107,13 @@ TEST_F(FemurDistance, RandomPointsMatchBruteForceTheReferenceAndTheContainer) {
     // The grid search finds what brute force over its own primitive finds, bit for bit.
     const double reach = 0.05 * diag();
     const double near = dist_->signed_distance(p, reach);
-    if (std::abs(sd) <= reach) EXPECT_EQ(near, sd);
-    else if (sd < 0) EXPECT_EQ(near, -reach);
-    else EXPECT_EQ(near, sd);
+    if (std::abs(sd) <= reach) {
+      EXPECT_EQ(near, sd);
+    } else if (sd < 0) {
+      EXPECT_EQ(near, -reach);
+    } else {
+      EXPECT_EQ(near, sd);
+    }
     EXPECT_EQ(std::abs(sd), dist_->distance_brute_force(p));
     inside += sd < 0;
   }
