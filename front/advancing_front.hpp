@@ -328,12 +328,14 @@ class AdvancingFront {
   /// to the container's interior point (where it fits), where it fits (a seed point in a corner
   /// is a common choice).
   Vec<D> first_centre(double r1) const {
-    if (container_.contains_ball(seed_point_, r1, tol_)) return seed_point_;
+    if (container_.contains_ball(seed_point_, r1, 0.0)) return seed_point_;
     const Vec<D> deep = container_.interior_point();
+    // Strictly inside (no tolerance): the slide would otherwise stop exactly at the tolerance,
+    // where any other rounding of the same distance (the validator's) sees the ball stick out.
     double lo = 0, hi = 1;  // fits at hi, not at lo
     for (int it = 0; it < 60; ++it) {
       const double mid = 0.5 * (lo + hi);
-      (container_.contains_ball(seed_point_ + mid * (deep - seed_point_), r1, tol_) ? hi : lo) = mid;
+      (container_.contains_ball(seed_point_ + mid * (deep - seed_point_), r1, 0.0) ? hi : lo) = mid;
     }
     return seed_point_ + hi * (deep - seed_point_);
   }

@@ -43,4 +43,16 @@ Vec<D> frame_origin(const Aabb<D>& bounds) {
   return origin;
 }
 
+/// The origin of a frame centred on where growth starts (`seed`, absolute), for a container too
+/// large ever to be filled: the seed rounded to a multiple of the power of two at least 2 r_max.
+template <int D>
+Vec<D> seed_frame_origin(const Vec<D>& seed, double r_max) {
+  int e = 0;
+  std::frexp(r_max, &e);
+  const double q = std::ldexp(1.0, e + 1);
+  Vec<D> origin;
+  for (int a = 0; a < D; ++a) origin[a] = q * std::round(seed[a] / q);
+  return origin;
+}
+
 }  // namespace fp

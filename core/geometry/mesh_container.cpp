@@ -184,7 +184,8 @@ std::vector<int> orient_consistently(const std::string& name, std::vector<std::a
 
 }  // namespace
 
-std::shared_ptr<MeshContainer> MeshContainer::from_file(const std::string& path, double scale, FrameChoice frame) {
+std::shared_ptr<MeshContainer> MeshContainer::from_file(const std::string& path, double scale, FrameChoice frame,
+                                                        const std::optional<Vec3>& explicit_origin) {
   const std::string name = base_name(path);
   if (!(scale > 0.0) || !std::isfinite(scale))
     throw std::invalid_argument("MeshContainer: scale must be positive and finite, got " + detail::format_number(scale) +
@@ -208,7 +209,8 @@ std::shared_ptr<MeshContainer> MeshContainer::from_file(const std::string& path,
     p *= scale;
     if (p.allFinite()) box.extend(p);
   }
-  const Vec3 origin = frame == FrameChoice::Local && !soup.points.empty() ? frame_origin<3>(box) : Vec3::Zero();
+  const Vec3 origin = explicit_origin ? *explicit_origin
+                     : frame == FrameChoice::Local && !soup.points.empty() ? frame_origin<3>(box) : Vec3::Zero();
   return std::shared_ptr<MeshContainer>(new MeshContainer(std::move(soup.points), std::move(triangles), name, origin));
 }
 

@@ -4,6 +4,7 @@
 // is CGAL-free.
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,8 +26,10 @@ class MeshContainer final : public Container<3> {
   /// than 2 facets), not orientable, or encloses no volume.
   /// With FrameChoice::Local the mesh is stored in its own local frame (frame_origin of its
   /// bounds), as a scene does; with Absolute, origin 0.
+  /// An explicit `origin` overrides the choice.
   static std::shared_ptr<MeshContainer> from_file(const std::string& path, double scale = 1.0,
-                                                  FrameChoice frame = FrameChoice::Absolute);
+                                                  FrameChoice frame = FrameChoice::Absolute,
+                                                  const std::optional<Vec3>& origin = std::nullopt);
   /// Same checks for a surface given in code (absolute vertices, stored relative to `origin`);
   /// `name` is used in messages and describe().
   static std::shared_ptr<MeshContainer> from_triangles(std::vector<Vec3> vertices,

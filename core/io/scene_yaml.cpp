@@ -302,6 +302,9 @@ std::string dim_text(int d) { return std::to_string(d) + "D, from 'dimension'"; 
 
 // --- containers ------------------------------------------------------------------------
 
+/// Containers wider than this many smallest radii get their frame at the seed point (parse_body).
+constexpr double kFarFrameExtent = 524288.0;  // 2^19: then |local| <= 2^18 r_min keeps 1e-10 r_min
+
 const Keys kContainerKeys = {"type", "min", "max", "center", "radius", "base", "axis", "height", "vertices", "file", "scale"};
 const Keys kContainerTypes3 = {"box", "sphere", "cylinder", "mesh"};
 const Keys kContainerTypes2 = {"rectangle", "disk", "polygon"};
@@ -315,7 +318,7 @@ Keys container_keys(const std::string& type) {
 }
 
 template <int D>
-ContainerPtr<D> parse_box(const Map& m) {
+ContainerPtr<D> parse_box(const Map& m, const std::optional<Vec<D>>& origin) {
   const Vec<D> lo = m.get("min").vec<D>(dim_text(D));
   const Value max = m.get("max");
   const Vec<D> hi = max.vec<D>(dim_text(D));
@@ -327,20 +330,20 @@ ContainerPtr<D> parse_box(const Map& m) {
   Aabb<D> box;
   box.extend(lo);
   box.extend(hi);
-  return construct(m, [&] { return std::make_shared<const BoxContainer<D>>(lo, hi, frame_origin<D>(box)); });
+  return construct(m, [&] { return std::make_shared<const BoxContainer<D>>(lo, hi, origin.value_or(frame_origin<D>(box))); });
 }
 
 template <int D>
-ContainerPtr<D> parse_ball(const Map& m) {
+ContainerPtr<D> parse_ball(const Map& m, const std::optional<Vec<D>>& origin) {
   const Vec<D> c = m.get("center").vec<D>(dim_text(D));
   const double r = m.get("radius").positive();
   Aabb<D> box;
   box.extend(c.array() - r);
   box.extend(c.array() + r);
-  return construct(m, [&] { return std::make_shared<const BallContainer<D>>(c, r, frame_origin<D>(box)); });
+  return construct(m, [&] { return std::make_shared<const BallContainer<D>>(c, r, origin.value_or(frame_origin<D>(box))); });
 }
 
-ContainerPtr<3> parse_cylinder(const Map& m) {
+ContainerPtr<3> parse_cylinder(const Map& m, const std::optional<Vec3>& origin) {
   const Vec3 base = m.get("base", "centre of the bottom cap").vec<3>(dim_text(3));
   Vec3 axis(0, 0, 1);
   if (auto a = m.find("axis")) {
@@ -356,20 +359,20 @@ ContainerPtr<3> parse_cylinder(const Map& m) {
     box.extend(end.array() - r);
     box.extend(end.array() + r);
   }
-  return construct(m, [&] { return std::make_shared<const CylinderContainer>(base, axis, r, h, frame_origin<3>(box)); });
+  return construct(m, [&] { return std::make_shared<const CylinderContainer>(base, axis, r, h, origin.value_or(frame_origin<3>(box))); });
 }
 
-ContainerPtr<2> parse_polygon(const Map& m) {
+ContainerPtr<2> parse_polygon(const Map& m, const std::optional<Vec2>& origin) {
   const Value v = m.get("vertices", "[[x, y], ...] in order around the polygon");
   std::vector<Vec2> vertices;
   for (const auto& item : v.list()) vertices.push_back(item.vec<2>("a 2D point"));
   if (vertices.size() < 3) v.fail("a polygon needs at least 3 vertices, got " + std::to_string(vertices.size()));
   Aabb<2> box;
   for (const Vec2& p : vertices) box.extend(p);
-  return construct(m, [&] { return std::make_shared<const PolygonContainer>(vertices, frame_origin<2>(box)); });
+  return construct(m, [&] { return std::make_shared<const PolygonContainer>(vertices, origin.value_or(frame_origin<2>(box))); });
 }
 
-ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx) {
+ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx, const std::optional<Vec3>& origin) {
   const Value file = m.get("file", "an STL, OFF or OBJ surface, relative to the scene file's folder");
   const std::string name = file.string();
   if (name.empty()) file.fail("must name a file");
@@ -391,12 +394,13 @@ ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx) {
   double scale = 1.0;
   if (auto s = m.find("scale")) scale = s->positive();
   if (ctx.read_files) ctx.read_files->push_back(resolved);
-  return construct(m, [&]() -> ContainerPtr<3> { return MeshContainer::from_file(resolved, scale, FrameChoice::Local); },
+  return construct(m, [&]() -> ContainerPtr<3> { return MeshContainer::from_file(resolved, scale, FrameChoice::Local, origin); },
                    "reading mesh '" + resolved + "'");
 }
 
+/// The container; in the frame of `origin` when given, else in its own (local_frame.hpp).
 template <int D>
-ContainerPtr<D> parse_container(const Value& v, const Context& ctx) {
+ContainerPtr<D> parse_container(const Value& v, const Context& ctx, const std::optional<Vec<D>>& origin = std::nullopt) {
   const Map m = v.map();
   m.check_known(kContainerKeys);
   const Keys& mine = D == 3 ? kContainerTypes3 : kContainerTypes2;
@@ -409,15 +413,15 @@ ContainerPtr<D> parse_container(const Value& v, const Context& ctx) {
   t.choice(mine);
   m.check_used(container_keys(type), "a '" + type + "' container");
   if constexpr (D == 3) {
-    if (type == "box") return parse_box<3>(m);
-    if (type == "sphere") return parse_ball<3>(m);
-    if (type == "cylinder") return parse_cylinder(m);
-    return parse_mesh(m, ctx);
+    if (type == "box") return parse_box<3>(m, origin);
+    if (type == "sphere") return parse_ball<3>(m, origin);
+    if (type == "cylinder") return parse_cylinder(m, origin);
+    return parse_mesh(m, ctx, origin);
   } else {
     (void)ctx;
-    if (type == "rectangle") return parse_box<2>(m);
-    if (type == "disk") return parse_ball<2>(m);
-    return parse_polygon(m);
+    if (type == "rectangle") return parse_box<2>(m, origin);
+    if (type == "disk") return parse_ball<2>(m, origin);
+    return parse_polygon(m, origin);
   }
 }
 
@@ -807,9 +811,23 @@ bool parse_particles(const Value& v, const Container<D>& container, Scene& scene
 
 template <int D>
 void parse_body(const Map& root, Scene& scene, const Context& ctx) {
-  ContainerPtr<D> container = parse_container<D>(root.get("container", "the region to fill"), ctx);
+  const Value container_value = root.get("container", "the region to fill");
+  ContainerPtr<D> container = parse_container<D>(container_value, ctx);
   const bool shapes = parse_particles<D>(root.get("particles", kParticleForms), *container, scene);
   if (auto p = root.find("packer")) parse_packer<D>(*p, *container, shapes, scene.packer);
+  // A container more than kFarFrameExtent smallest particles across can never be filled (some
+  // 10^16 particles): it is packed only around where growth starts, and there its own frame (its
+  // centre) would leave coordinates of up to half its extent, too coarse for the contact
+  // tolerance. Its frame moves to the seed point (local_frame.hpp: seed_frame_origin).
+  double r_min = std::numeric_limits<double>::infinity(), r_max = 0;
+  if (scene.radii) r_min = scene.radii->r_min(), r_max = scene.radii->r_max();
+  for (const auto& t : scene.particle_templates) r_min = std::min(r_min, t.size->r_min()), r_max = std::max(r_max, t.size->r_max());
+  if (container->bounds().size().maxCoeff() > kFarFrameExtent * r_min) {
+    Vec<D> seed = container->interior_point() + container->origin();
+    if (scene.packer.seed_point)
+      for (int a = 0; a < D; ++a) seed[a] = (*scene.packer.seed_point)[a];
+    container = parse_container<D>(container_value, ctx, seed_frame_origin<D>(seed, r_max));
+  }
   if constexpr (D == 3) scene.container3 = std::move(container);
   else scene.container2 = std::move(container);
 }

@@ -62,7 +62,7 @@ namespace fp {
 
 /// Largest scene file read (yaml-cpp needs about 0.7 s and 160 MB per MiB; geometry that big
 /// belongs in a mesh file).
-inline constexpr std::size_t kMaxSceneBytes = 4u << 20;
+inline constexpr std::size_t kMaxSceneBytes = 16u << 20;  // a polygon of 3 x 10^5 vertices
 
 /// Reads and parses `path`. Throws SceneError (also when the file cannot be read, is not a
 /// regular file, or is larger than kMaxSceneBytes).

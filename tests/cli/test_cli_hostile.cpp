@@ -315,7 +315,7 @@ TEST(CliHostileInputs, SceneOfHundredMegabytes) {
         while (text.size() < (100u << 20)) text += "1, ";
         write_bytes(w / "s.yaml", text + "1]\n");
       },
-      "pack s.yaml -o a.csv", 2, {"s.yaml", "limited to 4 MiB"});
+      "pack s.yaml -o a.csv", 2, {"s.yaml", "limited to 16 MiB"});
 }
 
 TEST(CliHostileInputs, MeshIsDevZero) {
