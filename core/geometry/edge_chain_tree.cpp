@@ -1,0 +1,133 @@
+#include "core/geometry/edge_chain_tree.hpp"
+
+#include <stdexcept>
+#include <utility>
+
+namespace fp {
+
+// Why for_each_edge_across may leave out an edge lying left of p (both endpoints' x below
+// p.x - margin) that Sunday's loop does look at: there orient(a, b, p) =
+// (bx - ax)(py - ay) - (by - ay)(px - ax) never counts. Take an upward edge (ay <= py < by) and
+// write DX, W, DY, U for the rounded differences bx - ax, py - ay, by - ay, px - ax. If DX <= 0
+// the first product is <= 0 and the second > 0: orient < 0. If DX > 0, rounding is monotone, so
+// DX <= U and W <= DY, hence fl(DX W) <= fl(DX DY) <= fl(DY U) and orient <= 0; equality needs
+// U <= DX (1 + 3 eps), i.e. px - bx <= 5 eps |bx - ax|, far below the margin (1e-12 of the
+// diagonal). So orient < 0: no count, no boundary. A downward edge is the mirror image (orient
+// > 0, nothing counted), and a horizontal edge at p's height counts only if p is on it.
+
+EdgeChainTree::EdgeChainTree(std::vector<Vec2> vertices) : v_(std::move(vertices)) {
+  if (v_.size() < 2) throw std::invalid_argument("EdgeChainTree: need at least 2 vertices");
+  if (v_.size() > static_cast<std::size_t>(std::numeric_limits<int>::max() / 2))
+    throw std::invalid_argument("EdgeChainTree: too many vertices");
+  for (const Vec2& p : v_) box_.extend(p);
+  slack_abs_ = kSlackAbs * box_.size().norm();
+  const int leaves = (size() + kLeafEdges - 1) / kLeafEdges;
+  nodes_.reserve(static_cast<std::size_t>(2 * leaves));
+  build(0, size());
+}
+
+namespace {
+
+double chord_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  return a == b ? (p - a).norm() : std::sqrt(segment_distance2(p, a, b));
+}
+
+}  // namespace
+
+// Preorder layout: a node's left child follows it, so a subtree is one contiguous block.
+int EdgeChainTree::build(int first, int count) {
+  const int index = static_cast<int>(nodes_.size());
+  nodes_.emplace_back();
+  Node node;
+  node.first = first;
+  node.count = count;
+  node.ca = a(first);
+  node.cb = b(first + count - 1);
+  if (count <= kLeafEdges) {
+    node.lo = node.hi = node.ca;
+    for (int i = first; i < first + count; ++i) {
+      node.lo = node.lo.cwiseMin(b(i));
+      node.hi = node.hi.cwiseMax(b(i));
+      node.dev = std::max(node.dev, chord_distance(b(i), node.ca, node.cb));
+    }
+  } else {
+    // Split on a leaf boundary, halves of (nearly) equal leaf counts: depth log2(n / kLeafEdges).
+    const int leaves = (count + kLeafEdges - 1) / kLeafEdges;
+    const int left_count = (leaves / 2) * kLeafEdges;
+    build(first, left_count);
+    node.right = build(first + left_count, count - left_count);
+    const Node& l = nodes_[static_cast<std::size_t>(index) + 1];
+    const Node& r = nodes_[static_cast<std::size_t>(node.right)];
+    node.lo = l.lo.cwiseMin(r.lo);
+    node.hi = l.hi.cwiseMax(r.hi);
+    // A child's run lies in its capsule; the capsule lies within (farther chord end + child dev)
+    // of the parent chord, since distance to a segment is convex along the child chord.
+    for (const Node* c : {&l, &r})
+      node.dev = std::max(node.dev, std::max(chord_distance(c->ca, node.ca, node.cb),
+                                             chord_distance(c->cb, node.ca, node.cb)) + c->dev);
+  }
+  nodes_[static_cast<std::size_t>(index)] = node;
+  return index;
+}
+
+double EdgeChainTree::lower_bound(const Node& node, const Vec2& p) const {
+  const double gx = std::max({node.lo.x() - p.x(), p.x() - node.hi.x(), 0.0});
+  const double gy = std::max({node.lo.y() - p.y(), p.y() - node.hi.y(), 0.0});
+  const double box = std::sqrt(gx * gx + gy * gy);
+  return std::max(box, chord_distance(p, node.ca, node.cb) - node.dev);
+}
+
+double EdgeChainTree::min_distance2(const Vec2& p) const {
+  double best = std::numeric_limits<double>::infinity();
+  if (nodes_.empty()) return best;
+  double limit = std::numeric_limits<double>::infinity();
+  // Depth first, nearer child first, so that a close edge is found early and prunes the rest.
+  std::array<std::pair<int, double>, 64> stack;
+  int top = 0;
+  stack[top++] = {0, lower_bound(nodes_[0], p)};
+  while (top > 0) {
+    const auto [k, bound] = stack[--top];
+    if (!(bound <= limit)) continue;
+    const Node& node = nodes_[static_cast<std::size_t>(k)];
+    if (node.right < 0) {
+      for (int i = node.first; i < node.first + node.count; ++i) best = std::min(best, segment_distance2(p, a(i), b(i)));
+      limit = widened(std::sqrt(best));
+      continue;
+    }
+    const int l = k + 1, r = node.right;
+    const double bl = lower_bound(nodes_[static_cast<std::size_t>(l)], p);
+    const double br = lower_bound(nodes_[static_cast<std::size_t>(r)], p);
+    if (bl <= br) {
+      stack[top++] = {r, br};
+      stack[top++] = {l, bl};
+    } else {
+      stack[top++] = {l, bl};
+      stack[top++] = {r, br};
+    }
+  }
+  return best;
+}
+
+bool EdgeChainTree::any_edge_closer_than(const Vec2& p, double radius) const {
+  bool found = false;
+  // for_each_edge_near has no early exit; this one stops at the first hit.
+  if (nodes_.empty()) return false;
+  const double limit = widened(radius);
+  std::array<int, 64> stack;
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0 && !found) {
+    const Node& node = nodes_[static_cast<std::size_t>(stack[--top])];
+    if (!(lower_bound(node, p) <= limit)) continue;
+    if (node.right < 0) {
+      for (int i = node.first; i < node.first + node.count && !found; ++i)
+        found = std::sqrt(segment_distance2(p, a(i), b(i))) < radius;
+      continue;
+    }
+    stack[top++] = node.right;
+    stack[top++] = static_cast<int>(&node - nodes_.data()) + 1;
+  }
+  return found;
+}
+
+}  // namespace fp
