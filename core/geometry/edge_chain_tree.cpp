@@ -5,15 +5,19 @@
 
 namespace fp {
 
-// Why for_each_edge_across may leave out an edge lying left of p (both endpoints' x below
-// p.x - margin) that Sunday's loop does look at: there orient(a, b, p) =
-// (bx - ax)(py - ay) - (by - ay)(px - ax) never counts. Take an upward edge (ay <= py < by) and
-// write DX, W, DY, U for the rounded differences bx - ax, py - ay, by - ay, px - ax. If DX <= 0
-// the first product is <= 0 and the second > 0: orient < 0. If DX > 0, rounding is monotone, so
-// DX <= U and W <= DY, hence fl(DX W) <= fl(DX DY) <= fl(DY U) and orient <= 0; equality needs
-// U <= DX (1 + 3 eps), i.e. px - bx <= 5 eps |bx - ax|, far below the margin (1e-12 of the
-// diagonal). So orient < 0: no count, no boundary. A downward edge is the mirror image (orient
-// > 0, nothing counted), and a horizontal edge at p's height counts only if p is on it.
+// Why winding_beyond may sum a run that lies left or right of p (every x beyond p.x -+ margin)
+// without looking at its edges: Sunday's loop finds p on an edge only when orient(a, b, p) == 0,
+// and counts an edge crossing p's height by the sign of orient(a, b, p) =
+// (bx - ax)(py - ay) - (by - ay)(px - ax). Take an upward edge (ay <= py < by) left of p and write
+// DX, W, DY, U for the rounded bx - ax, py - ay, by - ay, px - ax (U > 0). If DX <= 0 the first
+// product is <= 0 and the second > 0: orient < 0. If DX > 0, rounding is monotone, so DX <= U and
+// W <= DY, hence fl(DX W) <= fl(DX DY) <= fl(DY U) and orient <= 0, with equality only if
+// U <= DX (1 + 3 eps), i.e. px - bx <= 5 eps |bx - ax|: far below the margin (1e-12 of the
+// diagonal). So orient < 0 and the edge counts nothing, as it does exactly. Right of p (U < 0) the
+// same steps give orient > 0: the edge counts +1, exactly as an upward crossing does. Downward
+// edges are the mirror image (0 left of p, -1 right of it), and an edge that does not cross p's
+// height, or a horizontal one at it not holding p, counts 0. So the loop's terms are the exact
+// crossing numbers there, [ay <= py] - [by <= py] per edge, whose sum along a run telescopes.
 
 EdgeChainTree::EdgeChainTree(std::vector<Vec2> vertices) : v_(std::move(vertices)) {
   if (v_.size() < 2) throw std::invalid_argument("EdgeChainTree: need at least 2 vertices");

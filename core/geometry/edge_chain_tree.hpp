@@ -62,11 +62,14 @@ class EdgeChainTree {
   template <class F>
   void for_each_edge_near(const Vec2& p, double radius, F&& f) const;
 
-  /// Calls f(i) for a superset of the edges that Sunday's winding-number loop can count or find
-  /// p on: every edge whose y-range holds p.y() except some lying left of p by more than
-  /// ray_margin() (those compute orient(a, b, p) with the sign that counts nothing, see the .cpp).
+  /// Sunday's winding number of p, split: calls f(i) for the edges whose term the caller computes
+  /// (every edge whose y-range holds p.y() and whose x-range comes within ray_margin() of p.x(),
+  /// and maybe more), and returns the sum of the terms of all other edges: +1 for an edge going up
+  /// across p's height (ay <= py < by), -1 going down (by <= py < ay), 0 otherwise, summed over a
+  /// run that lies right of p as [first vertex's y <= py] - [last vertex's y <= py]. The .cpp says
+  /// why that is the very sum the floating-point loop over every edge finds.
   template <class F>
-  void for_each_edge_across(const Vec2& p, F&& f) const;
+  int winding_beyond(const Vec2& p, F&& f) const;
 
   /// Calls f(i, j), i < j, for a superset of the pairs of non-adjacent edges whose closed boxes
   /// overlap, by increasing i; stops when f returns true. For naming crossing edges.
@@ -119,16 +122,21 @@ void EdgeChainTree::for_each_edge_near(const Vec2& p, double radius, F&& f) cons
 }
 
 template <class F>
-void EdgeChainTree::for_each_edge_across(const Vec2& p, F&& f) const {
-  if (nodes_.empty()) return;
-  const double x_min = p.x() - ray_margin();
+int EdgeChainTree::winding_beyond(const Vec2& p, F&& f) const {
+  if (nodes_.empty()) return 0;
+  const double x_lo = p.x() - ray_margin(), x_hi = p.x() + ray_margin();
+  int winding = 0;
   std::array<int, 64> stack;
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[static_cast<std::size_t>(stack[--top])];
-    // The y test is exact: an edge whose y-range misses p.y() is not looked at by the loop.
-    if (!(node.lo.y() <= p.y() && p.y() <= node.hi.y() && node.hi.x() >= x_min)) continue;
+    // Off p's height (an exact test) or left of p: the run's terms are all 0.
+    if (!(node.lo.y() <= p.y() && p.y() <= node.hi.y() && node.hi.x() >= x_lo)) continue;
+    if (node.lo.x() > x_hi) {  // right of p: the run's terms telescope
+      winding += (node.ca.y() <= p.y() ? 1 : 0) - (node.cb.y() <= p.y() ? 1 : 0);
+      continue;
+    }
     if (node.right < 0) {
       for (int i = node.first; i < node.first + node.count; ++i) f(i);
       continue;
@@ -136,6 +144,7 @@ void EdgeChainTree::for_each_edge_across(const Vec2& p, F&& f) const {
     stack[top++] = node.right;
     stack[top++] = static_cast<int>(&node - nodes_.data()) + 1;
   }
+  return winding;
 }
 
 template <class F>

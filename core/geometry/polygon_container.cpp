@@ -136,8 +136,8 @@ bool PolygonContainer::locate(const Vec2& p, bool* on_boundary_out) const {
   int winding = 0;
   bool on_boundary = false;
   // Sunday's winding number: upward edges crossing the ray to +x with p on their left count +1.
-  // Only the edges across p's height can count (the tree leaves out the others).
-  tree_.for_each_edge_across(p, [&](int i) {
+  // The tree sums the runs of edges that lie clear of p; the edges near p are counted here.
+  const int beyond = tree_.winding_beyond(p, [&](int i) {
     const Vec2& a = tree_.a(i);
     const Vec2& b = tree_.b(i);
     if (a.y() <= p.y()) {
@@ -155,7 +155,7 @@ bool PolygonContainer::locate(const Vec2& p, bool* on_boundary_out) const {
     }
   });
   *on_boundary_out = on_boundary;
-  return on_boundary || winding != 0;
+  return on_boundary || winding + beyond != 0;
 }
 
 bool PolygonContainer::inside(const Vec2& p) const {

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "core/sampling/rng.hpp"
@@ -19,6 +20,20 @@ double loop_min_distance2(const std::vector<Vec2>& v, const Vec2& p) {
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < v.size(); ++i) best = std::min(best, segment_distance2(p, v[i], v[(i + 1) % v.size()]));
   return best;
+}
+
+/// Sunday's winding-number term of edge a->b for p (as the polygon container's loop computes it)
+/// and whether the loop finds p on that edge.
+std::pair<int, bool> sunday_term(const Vec2& a, const Vec2& b, const Vec2& p) {
+  const double o = (b.x() - a.x()) * (p.y() - a.y()) - (b.y() - a.y()) * (p.x() - a.x());
+  if (a.y() <= p.y()) {
+    if (b.y() > p.y()) return {o > 0 ? 1 : 0, o == 0};
+    const bool on = b.y() == p.y() && o == 0 && std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) &&
+                    std::min(a.y(), b.y()) <= p.y() && p.y() <= std::max(a.y(), b.y());
+    return {0, on};
+  }
+  if (b.y() <= p.y()) return {o < 0 ? -1 : 0, o == 0};
+  return {0, false};
 }
 
 /// A random walk (self-crossing allowed) of n vertices around `centre`, steps of about `step`.
@@ -56,6 +71,7 @@ void check_chain(const std::vector<Vec2>& v, Rng& rng, int points) {
       p = a + rng.uniform(0.0, 1.0) * (c - a) + rng.uniform(-1e-12, 1e-12) * b.size().norm() * normal;
       if (k % 8 == 1) p = a;
     }
+    if (k % 4 == 2) p.y() = v[static_cast<std::size_t>(rng.uniform(0.0, n - 1e-9))].y();  // at a vertex's height
     const double want = loop_min_distance2(v, p);
     ASSERT_EQ(std::bit_cast<std::uint64_t>(tree.min_distance2(p)), std::bit_cast<std::uint64_t>(want))
         << "n = " << n << ", p = " << p.transpose();
@@ -74,15 +90,27 @@ void check_chain(const std::vector<Vec2>& v, Rng& rng, int points) {
       EXPECT_TRUE(std::is_sorted(got.begin(), got.end()));
       for (const int i : near) EXPECT_TRUE(std::binary_search(got.begin(), got.end(), i)) << "edge " << i;
     }
-    // Every edge across p's height that reaches p.x() (the others are the ones the proof covers).
-    std::set<int> across;
-    tree.for_each_edge_across(p, [&](int i) { EXPECT_TRUE(across.insert(i).second); });
+    // Sunday's loop: the edges the tree sums must add up to what the loop finds for them, and
+    // none of them may hold p.
+    int called_sum = 0, loop_sum = 0;
+    std::set<int> called;
+    const int beyond = tree.winding_beyond(p, [&](int i) {
+      EXPECT_TRUE(called.insert(i).second);
+      called_sum += sunday_term(v[i], v[(i + 1) % n], p).first;
+    });
     for (int i = 0; i < n; ++i) {
+      const auto [term, on_edge] = sunday_term(v[i], v[(i + 1) % n], p);
+      loop_sum += term;
+      if (on_edge) {
+        EXPECT_TRUE(called.count(i)) << "edge " << i;
+      }
       const Vec2 a = v[i], c = v[(i + 1) % n];
-      if (std::min(a.y(), c.y()) <= p.y() && p.y() <= std::max(a.y(), c.y()) && std::max(a.x(), c.x()) >= p.x()) {
-        EXPECT_TRUE(across.count(i)) << "edge " << i;
+      if (std::min(a.y(), c.y()) <= p.y() && p.y() <= std::max(a.y(), c.y()) && std::min(a.x(), c.x()) <= p.x() &&
+          p.x() <= std::max(a.x(), c.x())) {
+        EXPECT_TRUE(called.count(i)) << "edge " << i;
       }
     }
+    EXPECT_EQ(beyond + called_sum, loop_sum) << "n = " << n << ", p = " << p.transpose();
   }
 }
 

@@ -274,8 +274,9 @@ void expect_same_walls(const std::vector<Wall<2>>& got, const std::vector<Wall<2
   }
 }
 
-/// Random points over the padded box, points within 1e-12 (relative) of edges and vertices,
-/// the vertices and edge midpoints themselves, and points about the interior point.
+/// Random points over the padded box (some at a vertex's height), points within 1e-12 (relative)
+/// of edges and vertices, the vertices and edge midpoints themselves, and points about the
+/// interior point.
 std::vector<Vec2> probe_points(const PolygonContainer& poly, Rng& rng, int count) {
   const auto& v = poly.vertices();
   const int n = static_cast<int>(v.size());
@@ -287,9 +288,9 @@ std::vector<Vec2> probe_points(const PolygonContainer& poly, Rng& rng, int count
     const Vec2 a = v[i], c = v[(i + 1) % n];
     const Vec2 normal = Vec2(a.y() - c.y(), c.x() - a.x()).normalized();
     switch (k % 6) {
-      case 0:
-      case 1: out.emplace_back(rng.uniform(b.lo.x() - 0.2 * scale, b.hi.x() + 0.2 * scale),
+      case 0: out.emplace_back(rng.uniform(b.lo.x() - 0.2 * scale, b.hi.x() + 0.2 * scale),
                                rng.uniform(b.lo.y() - 0.2 * scale, b.hi.y() + 0.2 * scale)); break;
+      case 1: out.emplace_back(rng.uniform(b.lo.x() - 0.2 * scale, b.hi.x() + 0.2 * scale), a.y()); break;
       case 2: out.push_back(a + rng.uniform(0.0, 1.0) * (c - a) + rng.uniform(-1e-12, 1e-12) * scale * normal); break;
       case 3: out.push_back(a + scale * Vec2(rng.uniform(-1e-12, 1e-12), rng.uniform(-1e-12, 1e-12))); break;
       case 4: out.push_back(k % 12 == 4 ? a : Vec2(0.5 * (a + c))); break;
