@@ -32,8 +32,14 @@ EdgeChainTree::EdgeChainTree(std::vector<Vec2> vertices) : v_(std::move(vertices
 
 namespace {
 
-double chord_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  return a == b ? (p - a).norm() : std::sqrt(segment_distance2(p, a, b));
+Vec2 left_of(const Vec2& u) { return Vec2(-u.y(), u.x()); }
+
+/// Extends the run's extents along u and its left normal by point q.
+void extend(Vec2& t_range, Vec2& s_range, const Vec2& origin, const Vec2& u, const Vec2& q) {
+  const Vec2 d = q - origin;
+  const double t = d.dot(u), s = d.dot(left_of(u));
+  t_range = Vec2(std::min(t_range[0], t), std::max(t_range[1], t));
+  s_range = Vec2(std::min(s_range[0], s), std::max(s_range[1], s));
 }
 
 }  // namespace
@@ -47,12 +53,14 @@ int EdgeChainTree::build(int first, int count) {
   node.count = count;
   node.ca = a(first);
   node.cb = b(first + count - 1);
+  node.u = node.ca == node.cb ? Vec2(1, 0) : Vec2((node.cb - node.ca).normalized());
+  node.t_range = node.s_range = Vec2::Zero();  // ca itself
   if (count <= kLeafEdges) {
     node.lo = node.hi = node.ca;
     for (int i = first; i < first + count; ++i) {
       node.lo = node.lo.cwiseMin(b(i));
       node.hi = node.hi.cwiseMax(b(i));
-      node.dev = std::max(node.dev, chord_distance(b(i), node.ca, node.cb));
+      extend(node.t_range, node.s_range, node.ca, node.u, b(i));
     }
   } else {
     // Split on a leaf boundary, halves of (nearly) equal leaf counts: depth log2(n / kLeafEdges).
@@ -64,11 +72,12 @@ int EdgeChainTree::build(int first, int count) {
     const Node& r = nodes_[static_cast<std::size_t>(node.right)];
     node.lo = l.lo.cwiseMin(r.lo);
     node.hi = l.hi.cwiseMax(r.hi);
-    // A child's run lies in its capsule; the capsule lies within (farther chord end + child dev)
-    // of the parent chord, since distance to a segment is convex along the child chord.
+    // The children's aligned boxes hold their runs, so their corners bound the parent's extents
+    // (O(1) a node; looser than the vertices by the children's turn, which is small on a smooth run).
     for (const Node* c : {&l, &r})
-      node.dev = std::max(node.dev, std::max(chord_distance(c->ca, node.ca, node.cb),
-                                             chord_distance(c->cb, node.ca, node.cb)) + c->dev);
+      for (const double t : {c->t_range[0], c->t_range[1]})
+        for (const double s : {c->s_range[0], c->s_range[1]})
+          extend(node.t_range, node.s_range, node.ca, node.u, c->ca + t * c->u + s * left_of(c->u));
   }
   nodes_[static_cast<std::size_t>(index)] = node;
   return index;
@@ -77,8 +86,11 @@ int EdgeChainTree::build(int first, int count) {
 double EdgeChainTree::lower_bound(const Node& node, const Vec2& p) const {
   const double gx = std::max({node.lo.x() - p.x(), p.x() - node.hi.x(), 0.0});
   const double gy = std::max({node.lo.y() - p.y(), p.y() - node.hi.y(), 0.0});
-  const double box = std::sqrt(gx * gx + gy * gy);
-  return std::max(box, chord_distance(p, node.ca, node.cb) - node.dev);
+  const Vec2 d = p - node.ca;
+  const double t = d.dot(node.u), s = d.dot(left_of(node.u));
+  const double gt = std::max({node.t_range[0] - t, t - node.t_range[1], 0.0});
+  const double gs = std::max({node.s_range[0] - s, s - node.s_range[1], 0.0});
+  return std::sqrt(std::max(gx * gx + gy * gy, gt * gt + gs * gs));
 }
 
 double EdgeChainTree::min_distance2(const Vec2& p) const {

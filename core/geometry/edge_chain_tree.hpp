@@ -1,11 +1,11 @@
 #pragma once
 // A bounding-volume hierarchy over the edges of a closed polygonal chain (edge i runs from vertex
 // i to vertex i+1 mod n), for polygon containers with many vertices. A node is a run of
-// consecutive edges; it is bounded by the box of its vertices and by the capsule around its chord
-// (the segment from its first to its last vertex, thickened by the farthest the run strays from
-// it). On a smooth boundary the capsule's slack shrinks with the square of the run's length, the
-// box's only linearly: what keeps deep queries (a point near the centre of a fine regular n-gon is
-// almost equidistant from every edge) from opening most leaves.
+// consecutive edges; it is bounded by the box of its vertices and by a box aligned with its chord
+// (the segment from its first to its last vertex). On a smooth boundary, and on one with teeth,
+// the aligned box's slack on the inner side is the sagitta, which shrinks with the square of the
+// run's length, the axis-aligned box's only linearly: what keeps deep queries (a point near the
+// centre of a fine regular n-gon is almost equidistant from every edge) from opening most leaves.
 //
 // The queries reproduce the loops over all edges double for double: a node is skipped only when
 // its bound exceeds the threshold by far more than the rounding of any distance computed inside
@@ -82,8 +82,10 @@ class EdgeChainTree {
  private:
   struct Node {
     Vec2 lo, hi;        ///< box of the run's vertices
-    Vec2 ca, cb;        ///< the chord: first and last vertex of the run
-    double dev = 0.0;   ///< no point of the run is farther than this from the chord
+    Vec2 ca, cb;        ///< first and last vertex of the run (the chord)
+    Vec2 u;             ///< unit vector along the chord (x if the run is closed)
+    Vec2 t_range;       ///< the run's extent along u, from ca ...
+    Vec2 s_range;       ///< ... and along u turned left
     int first = 0;      ///< first edge of the run
     int count = 0;      ///< number of edges
     int right = -1;     ///< index of the right child (the left one is the next node); -1 for a leaf
