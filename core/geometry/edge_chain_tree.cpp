@@ -5,19 +5,20 @@
 
 namespace fp {
 
-// Why winding_beyond may sum a run that lies left or right of p (every x beyond p.x -+ margin)
-// without looking at its edges: Sunday's loop finds p on an edge only when orient(a, b, p) == 0,
-// and counts an edge crossing p's height by the sign of orient(a, b, p) =
-// (bx - ax)(py - ay) - (by - ay)(px - ax). Take an upward edge (ay <= py < by) left of p and write
-// DX, W, DY, U for the rounded bx - ax, py - ay, by - ay, px - ax (U > 0). If DX <= 0 the first
-// product is <= 0 and the second > 0: orient < 0. If DX > 0, rounding is monotone, so DX <= U and
-// W <= DY, hence fl(DX W) <= fl(DX DY) <= fl(DY U) and orient <= 0, with equality only if
-// U <= DX (1 + 3 eps), i.e. px - bx <= 5 eps |bx - ax|: far below the margin (1e-12 of the
-// diagonal). So orient < 0 and the edge counts nothing, as it does exactly. Right of p (U < 0) the
-// same steps give orient > 0: the edge counts +1, exactly as an upward crossing does. Downward
-// edges are the mirror image (0 left of p, -1 right of it), and an edge that does not cross p's
-// height, or a horizontal one at it not holding p, counts 0. So the loop's terms are the exact
-// crossing numbers there, [ay <= py] - [by <= py] per edge, whose sum along a run telescopes.
+// Why winding_beyond may sum a run whose crossings of p's height all lie left of p, or all right
+// of it, by more than the margin, without looking at its edges. Sunday's loop finds p on an edge
+// when orient(a, b, p) == 0 and counts an edge crossing p's height by the sign of
+// orient(a, b, p) = (bx - ax)(py - ay) - (by - ay)(px - ax). For an edge crossing p's height at
+// x = xc (dy = by - ay != 0), the exact value is -dy (px - xc), and |py - ay| <= |dy|,
+// |px - ax| <= |bx - ax| + |px - xc|, so the sum of the magnitudes of the two products is at most
+// |dy| (2 |bx - ax| + |px - xc|). Shewchuk's bound for this evaluation (ccwerrboundA, about
+// 3.3e-16 of that sum: "Adaptive precision floating-point arithmetic and fast robust geometric
+// predicates", 1997) then says the computed sign is the exact one once |px - xc| > 1e-15 |bx - ax|,
+// far below the margin (1e-12 of the diagonal): such an edge counts exactly its crossing number,
+// 0 left of p, +1 (up) or -1 (down) right of it, and never finds p on it. An edge that does not
+// cross p's height counts 0, and a horizontal one at it counts 0 unless p is on it. Per edge the
+// crossing number right of p is [ay <= py] - [by <= py]; along a run the sum telescopes.
+// (No underflow assumed: coordinates of the container's size, not 1e-150.)
 
 EdgeChainTree::EdgeChainTree(std::vector<Vec2> vertices) : v_(std::move(vertices)) {
   if (v_.size() < 2) throw std::invalid_argument("EdgeChainTree: need at least 2 vertices");
@@ -91,6 +92,31 @@ double EdgeChainTree::lower_bound(const Node& node, const Vec2& p) const {
   const double gt = std::max({node.t_range[0] - t, t - node.t_range[1], 0.0});
   const double gs = std::max({node.s_range[0] - s, s - node.s_range[1], 0.0});
   return std::sqrt(std::max(gx * gx + gy * gy, gt * gt + gs * gs));
+}
+
+int EdgeChainTree::side_at_height(const Node& node, const Vec2& p) const {
+  const double m = ray_margin();
+  if (node.hi.x() < p.x() - m) return -1;
+  if (node.lo.x() > p.x() + m) return 1;
+  // The aligned box on the line, as offsets xi = x - ca.x: t = xi ux + eta uy in t_range and
+  // s = -xi uy + eta ux in s_range. Each bound is widened far beyond its rounding.
+  const double eta = p.y() - node.ca.y(), delta = p.x() - node.ca.x();
+  const double scale = std::abs(node.t_range[0]) + std::abs(node.t_range[1]) + std::abs(node.s_range[0]) +
+                       std::abs(node.s_range[1]) + std::abs(eta) + std::abs(delta);
+  double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+  auto clip = [&](double coef, double offset, const Vec2& range) {  // coef xi + offset in range
+    if (std::abs(coef) < 0.1) return;  // nearly parallel to the line: the other side bounds it
+    double a = (range[0] - offset) / coef, b = (range[1] - offset) / coef;
+    if (coef < 0) std::swap(a, b);
+    const double widen = 1e-12 * scale / std::abs(coef);
+    lo = std::max(lo, a - widen);
+    hi = std::min(hi, b + widen);
+  };
+  clip(node.u.x(), eta * node.u.y(), node.t_range);
+  clip(-node.u.y(), eta * node.u.x(), node.s_range);
+  if (hi < delta - m) return -1;
+  if (lo > delta + m) return 1;
+  return 0;
 }
 
 double EdgeChainTree::min_distance2(const Vec2& p) const {

@@ -63,11 +63,11 @@ class EdgeChainTree {
   void for_each_edge_near(const Vec2& p, double radius, F&& f) const;
 
   /// Sunday's winding number of p, split: calls f(i) for the edges whose term the caller computes
-  /// (every edge whose y-range holds p.y() and whose x-range comes within ray_margin() of p.x(),
-  /// and maybe more), and returns the sum of the terms of all other edges: +1 for an edge going up
-  /// across p's height (ay <= py < by), -1 going down (by <= py < ay), 0 otherwise, summed over a
-  /// run that lies right of p as [first vertex's y <= py] - [last vertex's y <= py]. The .cpp says
-  /// why that is the very sum the floating-point loop over every edge finds.
+  /// (every edge that meets p's height within ray_margin() of p.x(), and maybe more), and returns
+  /// the sum of the terms of all other edges: +1 for an edge going up across p's height
+  /// (ay <= py < by) right of p, -1 going down (by <= py < ay) right of p, 0 otherwise, summed over
+  /// a run as [first vertex's y <= py] - [last vertex's y <= py]. The .cpp says why that is the
+  /// very sum the floating-point loop over every edge finds.
   template <class F>
   int winding_beyond(const Vec2& p, F&& f) const;
 
@@ -97,6 +97,9 @@ class EdgeChainTree {
   /// Threshold `limit` widened by the slack: nodes whose lower bound exceeds it are skipped.
   double widened(double limit) const { return limit * (1.0 + kSlackRel) + slack_abs_; }
   double ray_margin() const { return slack_abs_; }
+  /// Where the run can meet the line y = p.y(): -1 only left of p.x() - ray_margin(), +1 only
+  /// right of p.x() + ray_margin() (or nowhere), 0 undecided.
+  int side_at_height(const Node& node, const Vec2& p) const;
 
   std::vector<Vec2> v_;
   std::vector<Node> nodes_;
@@ -126,16 +129,16 @@ void EdgeChainTree::for_each_edge_near(const Vec2& p, double radius, F&& f) cons
 template <class F>
 int EdgeChainTree::winding_beyond(const Vec2& p, F&& f) const {
   if (nodes_.empty()) return 0;
-  const double x_lo = p.x() - ray_margin(), x_hi = p.x() + ray_margin();
   int winding = 0;
   std::array<int, 64> stack;
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[static_cast<std::size_t>(stack[--top])];
-    // Off p's height (an exact test) or left of p: the run's terms are all 0.
-    if (!(node.lo.y() <= p.y() && p.y() <= node.hi.y() && node.hi.x() >= x_lo)) continue;
-    if (node.lo.x() > x_hi) {  // right of p: the run's terms telescope
+    if (!(node.lo.y() <= p.y() && p.y() <= node.hi.y())) continue;  // off p's height: all terms 0
+    const int side = side_at_height(node, p);
+    if (side < 0) continue;  // meets p's height left of p only: all terms 0
+    if (side > 0) {          // right of p only: the terms telescope
       winding += (node.ca.y() <= p.y() ? 1 : 0) - (node.cb.y() <= p.y() ? 1 : 0);
       continue;
     }

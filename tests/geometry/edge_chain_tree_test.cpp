@@ -104,10 +104,13 @@ void check_chain(const std::vector<Vec2>& v, Rng& rng, int points) {
       if (on_edge) {
         EXPECT_TRUE(called.count(i)) << "edge " << i;
       }
+      // An edge meeting p's height within 1e-9 (relative) of p: its term needs the loop's orient().
       const Vec2 a = v[i], c = v[(i + 1) % n];
-      if (std::min(a.y(), c.y()) <= p.y() && p.y() <= std::max(a.y(), c.y()) && std::min(a.x(), c.x()) <= p.x() &&
-          p.x() <= std::max(a.x(), c.x())) {
-        EXPECT_TRUE(called.count(i)) << "edge " << i;
+      if (std::min(a.y(), c.y()) <= p.y() && p.y() <= std::max(a.y(), c.y()) && a.y() != c.y()) {
+        const double xc = a.x() + (c.x() - a.x()) * (p.y() - a.y()) / (c.y() - a.y());
+        if (std::abs(xc - p.x()) <= 1e-9 * b.size().norm()) {
+          EXPECT_TRUE(called.count(i)) << "edge " << i;
+        }
       }
     }
     EXPECT_EQ(beyond + called_sum, loop_sum) << "n = " << n << ", p = " << p.transpose();

@@ -339,6 +339,11 @@ TEST(PolygonContainerIndexed, FineCoastlineEqualsTheLoops) {
   expect_queries_equal_the_loops(coastline(20000, Vec2(1e6, -2e6)), Vec2(1e6, -2e6), 61, 300);
 }
 
+TEST(PolygonContainerIndexed, FineStarEqualsTheLoops) {
+  // 10^4 teeth 0.05 deep and 3e-4 wide: a point on a tooth is in the boxes of hundreds of others.
+  expect_queries_equal_the_loops(star(10000, 0.45, 0.5, Vec2(-1, 2)), Vec2::Zero(), 66, 300);
+}
+
 TEST(PolygonContainerIndexed, CombEqualsTheLoops) {
   expect_queries_equal_the_loops(comb(500), Vec2::Zero(), 62, 600);
   // Points in the slots' band, where the ray crosses many edges, and exactly on slot walls.
