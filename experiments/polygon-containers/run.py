@@ -128,7 +128,12 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--before-max-n", type=int, default=100_000)
     ap.add_argument("--timeout", type=float, default=1200)
+    ap.add_argument("--report-only", action="store_true", help="rewrite RESULTS.md from runs.json")
     args = ap.parse_args()
+    if args.report_only:
+        with open(os.path.join(HERE, "runs.json")) as f:
+            report(json.load(f))
+        return
     after = os.environ.get("FRONTPACK", os.path.join(ROOT, "build/cli/frontpack"))
     before = os.environ.get("FRONTPACK_BEFORE")
     for b in [after] + ([before] if before else []):
@@ -152,18 +157,35 @@ def main():
                            cwd=ROOT).stdout.strip() != ""
     env = "".join(f"{k}={shlex.quote(os.environ[k])} " for k in ("FRONTPACK", "FRONTPACK_BEFORE") if k in os.environ)
     argv = " ".join(shlex.quote(a) for a in sys.argv[1:])
+    runs = {
+        "command": f"{env}/usr/bin/python3 experiments/polygon-containers/run.py{(' ' + argv) if argv else ''}",
+        "machine": f"{subprocess.run(['nproc'], capture_output=True, text=True).stdout.strip()} CPUs (`nproc`), "
+                   f"{model}, Linux {platform.release()}",
+        "commit": commit + (" (tracked files modified)" if dirty else ""),
+        "after": f"`{after}` (sha256 {sha(after)}…)",
+        "before": f"`{before}` (sha256 {sha(before)}…)" if before else None,
+        "rows": [{"kind": k, "n": n, "before": o, "after": a, "outputs": same} for k, n, o, a, same in rows],
+    }
+    with open(os.path.join(HERE, "runs.json"), "w") as f:
+        json.dump(runs, f, indent=1)
+    report(runs)
+
+
+def report(runs):
+    rows = [(r["kind"], r["n"], r["before"], r["after"], r["outputs"]) for r in runs["rows"]]
     L = [
         "# Polygon containers with many vertices: before and after the edge tree",
         "",
         "_Written entirely by `run.py` in this folder; re-run it to refresh every number._",
         "",
-        f"Command: `{env}/usr/bin/python3 experiments/polygon-containers/run.py{(' ' + argv) if argv else ''}` "
-        "(from the repository root)",
+        f"Command: `{runs['command']}` (from the repository root); measurements kept in `runs.json` "
+        "(`run.py --report-only` rewrites this file from them)",
         "",
-        f"* machine: {subprocess.run(['nproc'], capture_output=True, text=True).stdout.strip()} CPUs (`nproc`), "
-        f"{model}, Linux {platform.release()}; every command single-threaded, under a shared lock",
-        f"* repository commit: `{commit}`{' (tracked files modified)' if dirty else ''}",
-        f"* after: `{after}` (sha256 {sha(after)}…)" + (f"; before: `{before}` (sha256 {sha(before)}…)" if before else ""),
+        f"* machine: {runs['machine']}; every command single-threaded, under a shared lock (other sessions "
+        "shared the machine and do not all take the lock: single runs, the `before` ones above all, carry "
+        "some 10-30 % of noise)",
+        f"* repository commit: `{runs['commit']}`",
+        f"* after: {runs['after']}" + (f"; before: {runs['before']}" if runs["before"] else ""),
         "* per scene: `frontpack pack S.yaml -q -o P.csv --record R.json`, then "
         "`frontpack analyze P.csv --scene S.yaml --json A.json -q`; wall times by `/usr/bin/time`, "
         "pack and metrics seconds from the run record (metrics = the analysis and validation that "
@@ -200,16 +222,25 @@ def main():
         "",
         "After: every query goes through the edge tree (core/geometry/edge_chain_tree.hpp): runs of",
         "consecutive edges bounded by their box and by a box aligned with their chord; the nearest edge by",
-        "depth-first search, nearer child first; the inside test sums runs clear of the point whole (their",
-        "winding terms telescope) and looks only at edges whose box holds the point; walls by a range",
-        "search; the simplicity check is CGAL's exact sweep (O(n log n)). Every answer is the same double",
+        "depth-first search, nearer child first; the inside test sums whole every run that meets the",
+        "point's height only left or only right of it (the winding terms telescope) and looks at the few",
+        "edges that meet it near the point; walls by a range search; the simplicity check is CGAL's exact",
+        "sweep (O(n log n); the old sweep over x alone was quadratic for long edges side by side). The",
+        "deepest-point search is unchanged and costs O(log n) a probe now. Every answer is the same double",
         "as the old loops' (tests/geometry/polygon_loops.hpp keeps them as the reference), so the",
         "packings and every figure are unchanged (column `outputs`). The metrics needed no change of",
         "their own: they are linear in the particles and were slow only through the container's queries.",
         "",
         "At 10^6 vertices most of the remaining time is yaml-cpp reading the 45 MB scene and freeing its",
         "node tree (about 85 % of the samples of `pack`); the construction (simplicity sweep, tree,",
-        "deepest point) is about 10 %, packing and metrics about 5 %.",
+        "deepest point) is about 10 %, packing and metrics about 5 %: linear, but a file of vertices",
+        "read without YAML would be the next step.",
+        "",
+        "Packing time on the coastline grows faster than n (0.3 s at 10^5, 9 s at 10^6) for a fixed",
+        "number of particles: its edges (3e-6 long at 10^6) are far shorter than the particles, and the",
+        "front tries every edge and reflex corner within reach of a boundary particle as a body to",
+        "touch (tens of thousands at 10^6), each with its contact solve and containment test. That is",
+        "the front's wall handling (front/), not the container's queries.",
         "",
     ]
     with open(os.path.join(HERE, "RESULTS.md"), "w") as f:
