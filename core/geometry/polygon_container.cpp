@@ -1,6 +1,7 @@
 #include "core/geometry/polygon_container.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
