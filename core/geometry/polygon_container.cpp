@@ -1,6 +1,7 @@
 #include "core/geometry/polygon_container.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -8,6 +9,7 @@
 
 #include "core/geometry/container_checks.hpp"
 #include "core/geometry/deepest_point.hpp"
+#include "core/geometry/polygon_cgal.hpp"
 
 namespace fp {
 namespace {
@@ -32,12 +34,6 @@ bool segments_meet(const Vec2& p1, const Vec2& p2, const Vec2& q1, const Vec2& q
          (o3 == 0 && on_collinear_segment(q1, q2, p1)) || (o4 == 0 && on_collinear_segment(q1, q2, p2));
 }
 
-double segment_distance2(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 e = b - a;
-  const double t = std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
-  return (p - a - t * e).squaredNorm();
-}
-
 void check_simple(const std::vector<Vec2>& v) {
   const int n = static_cast<int>(v.size());
   // Adjacent edges meet at their shared vertex; they are wrong only if they fold back on each other.
@@ -49,104 +45,102 @@ void check_simple(const std::vector<Vec2>& v) {
       throw std::invalid_argument("PolygonContainer: vertices: the boundary doubles back on itself at vertex " +
                                   std::to_string(i) + " (self-intersecting)");
   }
-  // Non-adjacent edges must not meet: sweep over x so that only overlapping x-ranges are tested.
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  auto xmin = [&](int e) { return std::min(v[e].x(), v[(e + 1) % n].x()); };
-  auto xmax = [&](int e) { return std::max(v[e].x(), v[(e + 1) % n].x()); };
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return xmin(a) < xmin(b) || (xmin(a) == xmin(b) && a < b); });
-  for (int k = 0; k < n; ++k) {
-    const int e = order[k];
-    const double right = xmax(e);
-    for (int m = k + 1; m < n && xmin(order[m]) <= right; ++m) {
-      const int f = order[m];
-      const int d = std::abs(e - f);
-      if (d == 1 || d == n - 1) continue;  // adjacent, handled above
-      if (segments_meet(v[e], v[(e + 1) % n], v[f], v[(f + 1) % n]))
-        throw std::invalid_argument("PolygonContainer: vertices: edges " + std::to_string(std::min(e, f)) + " and " +
-                                    std::to_string(std::max(e, f)) + " intersect (self-intersecting polygon)");
-    }
-  }
+  // Non-adjacent edges must not meet: a sweep with exact predicates, O(n log n) in every case.
+  if (detail::is_simple_polygon(v)) return;
+  // Rejected: name two edges that meet (the search by boxes is fast on any reasonable polygon).
+  const EdgeChainTree tree(v);
+  int e = -1, f = -1;
+  tree.any_overlapping_pair([&](int i, int j) {
+    if (!segments_meet(tree.a(i), tree.b(i), tree.a(j), tree.b(j))) return false;
+    e = i, f = j;
+    return true;
+  });
+  if (e >= 0)
+    throw std::invalid_argument("PolygonContainer: vertices: edges " + std::to_string(e) + " and " + std::to_string(f) +
+                                " intersect (self-intersecting polygon)");
+  // The crossing is below the rounding of the floating-point test (nearly collinear edges).
+  throw std::invalid_argument("PolygonContainer: vertices: two edges touch (self-intersecting polygon)");
 }
 
 }  // namespace
 
-PolygonContainer::PolygonContainer(std::vector<Vec2> vertices, const Vec2& origin)
-    : Container<2>(origin), v_(std::move(vertices)) {
+PolygonContainer::PolygonContainer(std::vector<Vec2> vertices, const Vec2& origin) : Container<2>(origin) {
+  std::vector<Vec2>& v = vertices;
   detail::require_finite<2>(origin, "PolygonContainer", "origin");
-  for (Vec2& p : v_) p -= origin;
-  const int n = static_cast<int>(v_.size());
+  for (Vec2& p : v) p -= origin;
+  const int n = static_cast<int>(v.size());
   if (n < 3)
     throw std::invalid_argument("PolygonContainer: vertices: need at least 3, got " + std::to_string(n));
+  Aabb<2> box;
   for (int i = 0; i < n; ++i) {
-    if (!v_[i].allFinite())
+    if (!v[i].allFinite())
       throw std::invalid_argument("PolygonContainer: vertices: vertex " + std::to_string(i) + " is not finite: " +
-                                  detail::format_vec<2>(Vec2(v_[i] + origin)));
-    box_.extend(v_[i]);
+                                  detail::format_vec<2>(Vec2(v[i] + origin)));
+    box.extend(v[i]);
   }
   {
     std::vector<int> order(n);
     std::iota(order.begin(), order.end(), 0);
     auto less = [&](int a, int b) {
-      return v_[a].x() < v_[b].x() || (v_[a].x() == v_[b].x() && (v_[a].y() < v_[b].y() || (v_[a].y() == v_[b].y() && a < b)));
+      return v[a].x() < v[b].x() || (v[a].x() == v[b].x() && (v[a].y() < v[b].y() || (v[a].y() == v[b].y() && a < b)));
     };
     std::sort(order.begin(), order.end(), less);
     for (int k = 1; k < n; ++k)
-      if (v_[order[k]] == v_[order[k - 1]])
+      if (v[order[k]] == v[order[k - 1]])
         throw std::invalid_argument("PolygonContainer: vertices: vertices " + std::to_string(order[k - 1]) + " and " +
                                     std::to_string(order[k]) + " are the same point " +
-                                    detail::format_vec<2>(Vec2(v_[order[k]] + origin)));
+                                    detail::format_vec<2>(Vec2(v[order[k]] + origin)));
   }
   double twice_area = 0.0;
-  const Vec2 o = box_.center();  // shoelace about the centre: less cancellation far from the origin
+  const Vec2 o = box.center();  // shoelace about the centre: less cancellation far from the origin
   for (int i = 0; i < n; ++i) {
-    const Vec2 a = v_[i] - o, b = v_[(i + 1) % n] - o;
+    const Vec2 a = v[i] - o, b = v[(i + 1) % n] - o;
     twice_area += a.x() * b.y() - a.y() * b.x();
   }
-  const double diag2 = box_.size().squaredNorm();
+  const double diag2 = box.size().squaredNorm();
   const bool flat = !(std::abs(twice_area) > 1e-12 * diag2);
   if (flat) {
     // All on one line? Then say so; otherwise the simplicity check names the crossing edges
     // (a symmetric bow-tie also has zero signed area).
     int far = 1;
     for (int i = 2; i < n; ++i)
-      if ((v_[i] - v_[0]).squaredNorm() > (v_[far] - v_[0]).squaredNorm()) far = i;
+      if ((v[i] - v[0]).squaredNorm() > (v[far] - v[0]).squaredNorm()) far = i;
     bool on_line = true;
-    for (int i = 1; i < n; ++i) on_line = on_line && std::abs(orient(v_[0], v_[far], v_[i])) <= 1e-12 * diag2;
+    for (int i = 1; i < n; ++i) on_line = on_line && std::abs(orient(v[0], v[far], v[i])) <= 1e-12 * diag2;
     if (on_line) throw std::invalid_argument("PolygonContainer: vertices: zero area (all points on one line)");
   }
-  check_simple(v_);
+  check_simple(v);
   if (flat) throw std::invalid_argument("PolygonContainer: vertices: zero area");
-  if (twice_area < 0.0) std::reverse(v_.begin(), v_.end());
+  if (twice_area < 0.0) std::reverse(v.begin(), v.end());
   area_ = 0.5 * std::abs(twice_area);
+  tree_ = EdgeChainTree(std::move(v));
 
+  const std::vector<Vec2>& w = tree_.vertices();
   inward_.resize(n);
   reflex_.resize(n);
   for (int i = 0; i < n; ++i) {
-    const Vec2 e = (v_[(i + 1) % n] - v_[i]).normalized();
+    const Vec2 e = (w[(i + 1) % n] - w[i]).normalized();
     inward_[i] = Vec2(-e.y(), e.x());  // left of a counter-clockwise edge
-    reflex_[i] = orient(v_[(i + n - 1) % n], v_[i], v_[(i + 1) % n]) < 0.0;
+    reflex_[i] = orient(w[(i + n - 1) % n], w[i], w[(i + 1) % n]) < 0.0;
   }
 
   std::vector<Vec2> candidates;
   candidates.reserve(n);
   for (int i = 0; i < n; ++i) {
-    const Vec2 a = v_[i], b = v_[(i + 1) % n];
+    const Vec2 a = w[i], b = w[(i + 1) % n];
     candidates.push_back(0.5 * (a + b) + 1e-3 * (b - a).norm() * inward_[i]);
   }
   interior_ = detail::deepest_point<2>(*this, 32, candidates, 1e-4);
 }
 
-bool PolygonContainer::locate(const Vec2& p, double* dist2) const {
-  const int n = static_cast<int>(v_.size());
+bool PolygonContainer::locate(const Vec2& p, bool* on_boundary_out) const {
   int winding = 0;
   bool on_boundary = false;
-  double best = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < n; ++i) {
-    const Vec2& a = v_[i];
-    const Vec2& b = v_[i + 1 == n ? 0 : i + 1];
-    if (dist2) best = std::min(best, segment_distance2(p, a, b));
-    // Sunday's winding number: upward edges crossing the ray to +x with p on their left count +1.
+  // Sunday's winding number: upward edges crossing the ray to +x with p on their left count +1.
+  // The tree sums the runs of edges that lie clear of p; the edges near p are counted here.
+  const int beyond = tree_.winding_beyond(p, [&](int i) {
+    const Vec2& a = tree_.a(i);
+    const Vec2& b = tree_.b(i);
     if (a.y() <= p.y()) {
       if (b.y() > p.y()) {
         const double o = orient(a, b, p);
@@ -160,36 +154,59 @@ bool PolygonContainer::locate(const Vec2& p, double* dist2) const {
       if (o < 0) --winding;
       else if (o == 0) on_boundary = true;
     }
-  }
-  if (dist2) *dist2 = on_boundary ? 0.0 : best;
-  return on_boundary || winding != 0;
+  });
+  *on_boundary_out = on_boundary;
+  return on_boundary || winding + beyond != 0;
 }
 
 bool PolygonContainer::inside(const Vec2& p) const {
-  return locate(p, nullptr);
+  bool on_boundary;
+  return locate(p, &on_boundary);
 }
 
 double PolygonContainer::signed_distance(const Vec2& p) const {
-  double d2;
-  const bool in = locate(p, &d2);
-  const double d = std::sqrt(d2);
+  bool on_boundary;
+  const bool in = locate(p, &on_boundary);
+  const double d = std::sqrt(on_boundary ? 0.0 : tree_.min_distance2(p));
   return in ? -d : d;
 }
 
+bool PolygonContainer::contains_ball(const Vec2& c, double r, double rel_tol) const {
+  const double t = -r + rel_tol * r;  // the default's threshold on the signed distance
+  if (!(t < 0.0)) return signed_distance(c) <= t;
+  // sqrt is monotone, so -sqrt(min d2) <= t exactly when no edge has sqrt(d2) < -t.
+  if (tree_.any_edge_closer_than(c, -t)) return false;
+  bool on_boundary;
+  return locate(c, &on_boundary) && !on_boundary;
+}
+
 void PolygonContainer::walls_near(const Vec2& p, double reach, std::vector<Wall<2>>& out) const {
-  const int n = static_cast<int>(v_.size());
+  const int n = tree_.size();
   const double reach2 = reach * reach;
-  for (int i = 0; i < n; ++i) {
-    const Vec2& a = v_[i];
-    const Vec2& b = v_[i + 1 == n ? 0 : i + 1];
-    if (segment_distance2(p, a, b) <= reach2) out.push_back(Wall<2>::plane(a, inward_[i], i));
+  // Corner i is the start of edge i, so the edges' leaves within reach hold every corner within
+  // reach. Corners go after all edges (as the loops over all edges gave them): kept aside here,
+  // or found by a second pass if unusually many.
+  std::array<int, 32> corners;
+  int found = 0;
+  tree_.for_each_edge_near(p, std::sqrt(reach2), [&](int i) {
+    const Vec2& a = tree_.a(i);
+    if (segment_distance2(p, a, tree_.b(i)) <= reach2) out.push_back(Wall<2>::plane(a, inward_[i], i));
+    if (reflex_[i] && (p - a).squaredNorm() <= reach2) {
+      if (found < static_cast<int>(corners.size())) corners[found] = i;
+      ++found;
+    }
+  });
+  if (found <= static_cast<int>(corners.size())) {
+    for (int k = 0; k < found; ++k) out.push_back(Wall<2>::vertex(tree_.a(corners[k]), n + corners[k]));
+    return;
   }
-  for (int i = 0; i < n; ++i)
-    if (reflex_[i] && (p - v_[i]).squaredNorm() <= reach2) out.push_back(Wall<2>::vertex(v_[i], n + i));
+  tree_.for_each_edge_near(p, std::sqrt(reach2), [&](int i) {
+    if (reflex_[i] && (p - tree_.a(i)).squaredNorm() <= reach2) out.push_back(Wall<2>::vertex(tree_.a(i), n + i));
+  });
 }
 
 std::string PolygonContainer::describe() const {
-  return "polygon (" + std::to_string(v_.size()) + " vertices, area " + detail::format_short(area_) + ")";
+  return "polygon (" + std::to_string(tree_.size()) + " vertices, area " + detail::format_short(area_) + ")";
 }
 
 }  // namespace fp

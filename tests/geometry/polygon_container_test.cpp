@@ -1,14 +1,18 @@
-// PolygonContainer against brute force: distance to every edge, winding number by angle sums.
+// PolygonContainer against brute force: distance to every edge, winding number by angle sums;
+// and against the loops over every edge it ran before its edges were indexed, double for double.
 #include "core/geometry/polygon_container.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <set>
 
 #include "core/sampling/rng.hpp"
+#include "tests/geometry/polygon_loops.hpp"
 #include "tests/geometry/reference_geometry.hpp"
 
 namespace fp {
@@ -224,6 +228,222 @@ TEST(PolygonContainer, ImpossiblePolygonsAreRefused) {
   testref::expect_invalid([] { PolygonContainer({Vec2(0, 0), Vec2(4, 0), Vec2(4, 4), Vec2(2, 0.0), Vec2(0, 4)}); },
                           {"intersect"});  // a vertex touching another edge
   testref::expect_invalid([&] { PolygonContainer({Vec2(0, 0), Vec2(1, nan), Vec2(0, 1)}); }, {"vertex 1", "finite"});
+}
+
+// --- The indexed queries against the loops they replaced (polygon_loops.hpp), double for double.
+
+/// A regular n-gon.
+std::vector<Vec2> regular(int n, double radius, const Vec2& c) {
+  std::vector<Vec2> v;
+  for (int k = 0; k < n; ++k) v.push_back(c + radius * Vec2(std::cos(2 * kPi * k / n), std::sin(2 * kPi * k / n)));
+  return v;
+}
+
+/// A wavy coastline around c with a fine zig-zag on top of it (n even): non-convex at two scales.
+std::vector<Vec2> coastline(int n, const Vec2& c) {
+  std::vector<Vec2> v;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * kPi * k / n;
+    const double r = 0.5 * (1 + 0.1 * std::sin(7 * a) + 0.03 * std::sin(53 * a)) + (k % 2 ? 0.002 : -0.002);
+    v.push_back(c + r * Vec2(std::cos(a), std::sin(a)));
+  }
+  return v;
+}
+
+/// A comb: `teeth` thin vertical slots cut into the top of the unit square, so that a horizontal
+/// ray through the slots crosses about 4 * teeth edges.
+std::vector<Vec2> comb(int teeth) {
+  std::vector<Vec2> v{Vec2(0, 0), Vec2(1, 0)};
+  for (int k = teeth - 1; k >= 0; --k) {
+    const double x0 = (k + 0.25) / teeth, x1 = (k + 0.75) / teeth;
+    v.insert(v.end(), {Vec2(x1 + 0.25 / teeth, 1), Vec2(x1, 1), Vec2(x1, 0.3), Vec2(x0, 0.3), Vec2(x0, 1)});
+  }
+  v.emplace_back(0, 1);
+  return v;
+}
+
+std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
+
+void expect_same_walls(const std::vector<Wall<2>>& got, const std::vector<Wall<2>>& want, const Vec2& p) {
+  ASSERT_EQ(got.size(), want.size()) << "p = " << p.transpose();
+  for (std::size_t k = 0; k < got.size(); ++k) {
+    EXPECT_EQ(got[k].id, want[k].id);
+    EXPECT_EQ(got[k].kind, want[k].kind);
+    EXPECT_EQ(got[k].point, want[k].point);
+    EXPECT_EQ(got[k].normal, want[k].normal);
+  }
+}
+
+/// Random points over the padded box (some at a vertex's height), points within 1e-12 (relative)
+/// of edges and vertices, the vertices and edge midpoints themselves, and points about the
+/// interior point.
+std::vector<Vec2> probe_points(const PolygonContainer& poly, Rng& rng, int count) {
+  const auto& v = poly.vertices();
+  const int n = static_cast<int>(v.size());
+  const Aabb<2> b = poly.bounds();
+  const double scale = b.size().norm();
+  std::vector<Vec2> out;
+  for (int k = 0; k < count; ++k) {
+    const int i = static_cast<int>(rng.uniform(0.0, n - 1e-9));
+    const Vec2 a = v[i], c = v[(i + 1) % n];
+    const Vec2 normal = Vec2(a.y() - c.y(), c.x() - a.x()).normalized();
+    switch (k % 6) {
+      case 0: out.emplace_back(rng.uniform(b.lo.x() - 0.2 * scale, b.hi.x() + 0.2 * scale),
+                               rng.uniform(b.lo.y() - 0.2 * scale, b.hi.y() + 0.2 * scale)); break;
+      case 1: out.emplace_back(rng.uniform(b.lo.x() - 0.2 * scale, b.hi.x() + 0.2 * scale), a.y()); break;
+      case 2: out.push_back(a + rng.uniform(0.0, 1.0) * (c - a) + rng.uniform(-1e-12, 1e-12) * scale * normal); break;
+      case 3: out.push_back(a + scale * Vec2(rng.uniform(-1e-12, 1e-12), rng.uniform(-1e-12, 1e-12))); break;
+      case 4: out.push_back(k % 12 == 4 ? a : Vec2(0.5 * (a + c))); break;
+      case 5: out.push_back(poly.interior_point() + 1e-3 * scale * Vec2(rng.uniform(-1, 1), rng.uniform(-1, 1))); break;
+    }
+  }
+  return out;
+}
+
+void expect_queries_equal_the_loops(const std::vector<Vec2>& input, const Vec2& origin, std::uint64_t seed, int count) {
+  const PolygonContainer poly(input, origin);
+  const auto& v = poly.vertices();
+  Rng rng(seed);
+  std::vector<Wall<2>> walls;
+  int in = 0, out = 0;
+  for (const Vec2& p : probe_points(poly, rng, count)) {
+    const double sd = loops::signed_distance(v, p);
+    ASSERT_EQ(bits(poly.signed_distance(p)), bits(sd)) << "p = " << p.transpose();
+    ASSERT_EQ(poly.inside(p), loops::locate(v, p, nullptr)) << "p = " << p.transpose();
+    (sd < 0 ? in : out) += 1;
+    const double d = std::abs(sd);
+    for (const double r : {d, d * (1 - 1e-9), d * (1 + 1e-9), std::nextafter(d, 0.0), rng.uniform(0.0, 0.1) * poly.bounds().size().norm(), 0.0})
+      for (const double tol : {1e-9, 0.0, 2.0})
+        ASSERT_EQ(poly.contains_ball(p, r, tol), sd <= -r + tol * r) << "p = " << p.transpose() << ", r = " << r;
+    const double reach = 0.3 * poly.bounds().size().norm() * rng.uniform(0.0, 1.0);
+    walls.clear();
+    poly.walls_near(p, reach, walls);
+    expect_same_walls(walls, loops::walls_near(v, p, reach), p);
+  }
+  EXPECT_GT(in, count / 10);
+  EXPECT_GT(out, count / 10);
+}
+
+TEST(PolygonContainerIndexed, SmallPolygonsEqualTheLoops) {
+  expect_queries_equal_the_loops(l_shape(), Vec2::Zero(), 50, 3000);
+  expect_queries_equal_the_loops(star(7, 0.4, 1.0, Vec2(-2, 5)), Vec2(-2, 5), 51, 3000);
+  Rng rng(52);
+  for (int k = 0; k < 6; ++k) expect_queries_equal_the_loops(random_star_shaped(rng, 9 + 40 * k), Vec2::Zero(), 53 + k, 600);
+}
+
+TEST(PolygonContainerIndexed, FineRegularPolygonEqualsTheLoops) {
+  expect_queries_equal_the_loops(regular(20000, 0.5, Vec2(3, 4)), Vec2(3, 4), 60, 300);
+}
+
+TEST(PolygonContainerIndexed, FineCoastlineEqualsTheLoops) {
+  expect_queries_equal_the_loops(coastline(20000, Vec2(1e6, -2e6)), Vec2(1e6, -2e6), 61, 300);
+}
+
+TEST(PolygonContainerIndexed, FineStarEqualsTheLoops) {
+  // 10^4 teeth 0.05 deep and 3e-4 wide: a point on a tooth is in the boxes of hundreds of others.
+  expect_queries_equal_the_loops(star(10000, 0.45, 0.5, Vec2(-1, 2)), Vec2::Zero(), 66, 300);
+}
+
+TEST(PolygonContainerIndexed, CombEqualsTheLoops) {
+  expect_queries_equal_the_loops(comb(500), Vec2::Zero(), 62, 600);
+  // Points in the slots' band, where the ray crosses many edges, and exactly on slot walls.
+  const PolygonContainer poly(comb(500));
+  Rng rng(63);
+  for (int k = 0; k < 300; ++k) {
+    const Vec2 p(k % 3 ? rng.uniform(-0.1, 1.1) : (std::floor(rng.uniform(0, 500)) + 0.25) / 500, rng.uniform(0.29, 1.01));
+    ASSERT_EQ(bits(poly.signed_distance(p)), bits(loops::signed_distance(poly.vertices(), p))) << p.transpose();
+  }
+}
+
+TEST(PolygonContainerIndexed, NonFinitePointsEqualTheLoops) {
+  const PolygonContainer poly(l_shape());
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (const Vec2& p : {Vec2(nan, 1), Vec2(1, nan), Vec2(inf, 1), Vec2(1, -inf)}) {
+    EXPECT_EQ(bits(poly.signed_distance(p)), bits(loops::signed_distance(poly.vertices(), p)));
+    EXPECT_EQ(poly.inside(p), loops::locate(poly.vertices(), p, nullptr));
+    EXPECT_EQ(poly.contains_ball(p, 0.1), loops::signed_distance(poly.vertices(), p) <= -0.1 + 1e-9 * 0.1);
+  }
+  std::vector<Wall<2>> walls;
+  poly.walls_near(Vec2(1, 1), nan, walls);
+  EXPECT_TRUE(walls.empty());
+  poly.walls_near(Vec2(1, 1), -0.5, walls);  // the loops square the reach
+  expect_same_walls(walls, loops::walls_near(poly.vertices(), Vec2(1, 1), -0.5), Vec2(1, 1));
+}
+
+TEST(PolygonContainerIndexed, ManyReflexCornersWithinReachComeAfterTheEdgesInOrder) {
+  const PolygonContainer poly(star(100, 0.9, 1.0, Vec2::Zero()));  // 100 reflex corners, all within 1.0
+  std::vector<Wall<2>> walls;
+  poly.walls_near(Vec2::Zero(), 1.0, walls);
+  expect_same_walls(walls, loops::walls_near(poly.vertices(), Vec2::Zero(), 1.0), Vec2::Zero());
+  EXPECT_EQ(walls.size(), 300u);
+}
+
+// The simplicity test (an exact sweep) decides as the floating-point test of every pair did,
+// whenever that one is exact: on small integer coordinates every orient() is.
+TEST(PolygonContainerIndexed, SimplicityDecisionEqualsEveryPairOnGridPolygons) {
+  Rng rng(64);
+  int simple = 0, refused = 0;
+  for (int trial = 0; trial < 6000; ++trial) {
+    const int n = 3 + trial % 7;
+    std::vector<Vec2> v;
+    for (int k = 0; k < n; ++k) v.emplace_back(std::floor(rng.uniform(0, 5)), std::floor(rng.uniform(0, 5)));
+    std::set<std::pair<double, double>> distinct;
+    for (const Vec2& p : v) distinct.insert({p.x(), p.y()});
+    if (distinct.size() < v.size()) continue;
+    double twice_area = 0;
+    for (int k = 0; k < n; ++k) twice_area += v[k].x() * v[(k + 1) % n].y() - v[(k + 1) % n].x() * v[k].y();
+    const bool want = twice_area != 0 && loops::is_simple(v);
+    bool got = true;
+    try {
+      PolygonContainer poly(v);
+    } catch (const std::invalid_argument&) {
+      got = false;
+    }
+    ASSERT_EQ(got, want) << "polygon of " << n << " vertices, first " << v[0].transpose();
+    (got ? simple : refused) += 1;
+  }
+  EXPECT_GT(simple, 500);
+  EXPECT_GT(refused, 2000);
+}
+
+TEST(PolygonContainerIndexed, SimplicityDecisionEqualsEveryPairOnRandomPolygons) {
+  Rng rng(65);
+  int simple = 0, refused = 0;
+  for (int trial = 0; trial < 1200; ++trial) {
+    std::vector<Vec2> v = random_star_shaped(rng, 5 + trial % 40);
+    if (trial % 2) std::swap(v[0], v[1 + trial % (v.size() - 1)]);  // usually makes it cross itself
+    bool got = true;
+    try {
+      PolygonContainer poly(v);
+    } catch (const std::invalid_argument& e) {
+      got = false;
+      EXPECT_NE(std::string(e.what()).find("self-intersect"), std::string::npos) << e.what();
+    }
+    ASSERT_EQ(got, loops::is_simple(v)) << "trial " << trial;
+    (got ? simple : refused) += 1;
+  }
+  EXPECT_GT(simple, 500);
+  EXPECT_GT(refused, 400);
+}
+
+TEST(PolygonContainerIndexed, StraightVerticesAndAManyVertexCombAreAccepted) {
+  // Collinear consecutive vertices (a straight angle) are fine; they are not reflex.
+  const PolygonContainer square({Vec2(0, 0), Vec2(0.5, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)});
+  EXPECT_FALSE(square.is_reflex(1));
+  EXPECT_NEAR(square.measure(), 1.0, 1e-15);
+  // A comb on its side: 40000 long horizontal edges whose x-ranges all overlap (a sweep over x
+  // alone tested 10^9 pairs here).
+  auto sideways = [](std::vector<Vec2> v) {
+    for (Vec2& p : v) std::swap(p.x(), p.y());
+    return v;
+  };
+  const PolygonContainer teeth(sideways(comb(20000)));
+  EXPECT_EQ(teeth.vertices().size(), 100003u);
+  testref::expect_invalid([&] {
+    std::vector<Vec2> c = comb(20000);
+    c[50001].x() += 0.6 / 20000;  // one slot wall into its neighbour
+    PolygonContainer p(sideways(c));
+  }, {"edges", "intersect"});
 }
 
 }  // namespace
