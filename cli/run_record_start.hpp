@@ -48,7 +48,7 @@ inline std::vector<std::pair<std::string, std::uint64_t>> front_counter_entries(
           {"wall_bodies", c.wall_bodies},         {"radii_drawn", c.radii_drawn},
           {"radii_unplaced", c.radii_unplaced},   {"max_neighbours", c.max_neighbours},
           {"voids_reopened", c.voids_reopened},   {"voids_seeded", c.voids_seeded},
-          {"two_contact_placements", c.two_contact_placements}};
+          {"two_contact_placements", c.two_contact_placements}, {"contact_bodies_capped", c.contact_bodies_capped}};
 }
 
 /// The first two lines of the summary: what was run, and in which container.

@@ -27,6 +27,7 @@ struct FrontCounters {
   std::uint64_t voids_reopened = 0;       ///< voids found after F ran empty, growth resumed from their surroundings
   std::uint64_t voids_seeded = 0;         ///< voids found after F ran empty and given a new seed particle
   std::uint64_t two_contact_placements = 0;  ///< 3D: particles placed touching only s0 and one body (no pair had a position)
+  std::uint64_t contact_bodies_capped = 0;   ///< pair scans limited to the nearest contact bodies (a V of thousands)
 };
 
 template <int D>
