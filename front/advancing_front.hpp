@@ -414,7 +414,7 @@ class AdvancingFront {
     // A closed particle (no longer in F) rarely has room left next to it: skipping it as a contact
     // body (it stays an obstacle in nb_) removes most pairs (experiments/front-levers).
     const bool front_only = opt_.contact_bodies == ContactBodies::Front;
-    // The pair scan is quadratic in the contact bodies. A mobile far larger than s0 (a wide
+    // The 3D pair scan is quadratic in the contact bodies. A mobile far larger than s0 (a wide
     // size distribution: a big radius tried next to small particles) has a V of thousands of
     // small neighbours; its pairs are limited to the kMaxContactBodies nearest (it stays checked
     // against all of V), which bounds the cost of each try. Narrow distributions have |V| < 80
@@ -424,7 +424,7 @@ class AdvancingFront {
     std::size_t particles = 0;
     for (const Neighbour& n : nb_) {
       if (front_only && !in_front_[n.id]) continue;
-      if (particles++ == kMaxContactBodies) {
+      if (D == 3 && particles++ == kMaxContactBodies) {  // a 2D scan is linear: no cap
         ++res.counters.contact_bodies_capped;
         break;
       }

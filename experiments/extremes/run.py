@@ -182,6 +182,15 @@ def cases(folder):
         out.append(("ratio", f"box 3D, bimodal, ratio {ratio}", None, scene(3, box, bimodal(rmin, rmax))))
         out.append(("ratio", f"rectangle 2D, uniform, ratio {ratio}", None, scene(2, rect, uniform(rmin, rmax))))
         out.append(("ratio", f"rectangle 2D, bimodal, ratio {ratio}", None, scene(2, rect, bimodal(rmin, rmax))))
+    # The wide mixes: mostly small particles, 1 % of large ones, by count, in a unit box.
+    for ratio in [100, 1000]:
+        rmax = 0.1
+        out.append(("ratio", f"box 1, bimodal 99:1, ratio {ratio}", None,
+                    scene(3, "{type: box, min: [0, 0, 0], max: [1, 1, 1]}",
+                          bimodal(rmax / ratio, rmax, small_weight=99, large_weight=1))))
+        out.append(("ratio", f"square 1, bimodal 99:1, ratio {ratio}", None,
+                    scene(2, "{type: rectangle, min: [0, 0], max: [1, 1]}",
+                          bimodal(rmax / ratio, rmax, small_weight=99, large_weight=1))))
     # Thin containers: a monolayer cell 2.05 r_max thick, a strip, needles, a thin-necked polygon.
     rr = uniform(0.01, 0.02)
     out.append(("thin", "slab 3D, 2.05 r_max thick", None, scene(3, "{type: box, min: [0, 0, 0], max: [1, 1, 0.041]}", rr)))
