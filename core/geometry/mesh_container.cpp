@@ -10,9 +10,15 @@
 #include "core/geometry/container_checks.hpp"
 #include "core/geometry/deepest_point.hpp"
 #include "core/geometry/mesh_cgal.hpp"
+#include "core/system/available_memory.hpp"
 
 namespace fp {
 namespace {
+
+/// Memory per face of a mesh container in a whole run (its index, the validation's own grid):
+/// 440-470 B measured as peak RSS over faces for binary STL spheres of 0.6 and 2.6 M faces
+/// (experiments/extremes/RESULTS.md, "Limits"); rounded up.
+constexpr double kBytesPerFacet = 500;
 
 std::string base_name(const std::string& path) {
   const std::size_t slash = path.find_last_of("/\\");
@@ -194,6 +200,13 @@ std::shared_ptr<MeshContainer> MeshContainer::from_file(const std::string& path,
   std::string error;
   if (!detail::read_polygon_soup(path, soup, error))
     throw std::invalid_argument("mesh '" + path + "' cannot be read: " + error);
+  // Its index and the validation's own grid take about kBytesPerFacet each: a mesh too large for
+  // the machine is refused before they are built (the kernel would kill the process instead).
+  if (const MemoryBudget memory = available_memory(); double(soup.polygons.size()) * kBytesPerFacet > double(memory.bytes))
+    throw std::invalid_argument("mesh '" + path + "' has " + std::to_string(soup.polygons.size()) + " faces, which need about " +
+                                std::to_string(std::llround(double(soup.polygons.size()) * kBytesPerFacet / 1e6)) +
+                                " MB to index, more than the " + std::to_string(memory.bytes / 1000000) +
+                                " MB this process may use (" + memory.source + "); simplify the surface");
   std::vector<std::array<int, 3>> triangles;
   triangles.reserve(soup.polygons.size());
   for (std::size_t f = 0; f < soup.polygons.size(); ++f) {

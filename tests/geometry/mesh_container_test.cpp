@@ -3,6 +3,7 @@
 #include "core/geometry/mesh_container.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 
 #include <chrono>
 #include <cmath>
@@ -134,6 +135,45 @@ TEST(MeshContainer, RefusesBadFilesNamingThem) {
                           {"overlapping_cubes.off", "intersects itself"});
   testref::expect_invalid([] { MeshContainer::from_file(data("cube.stl"), 0.0); }, {"scale", "cube.stl"});
   testref::expect_invalid([] { MeshContainer::from_file(data("cube.stl"), std::nan("")); }, {"scale"});
+}
+
+/// The address space this process maps now (VmSize in /proc/self/status), in bytes.
+rlim_t mapped_bytes() {
+  std::ifstream in("/proc/self/status");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("VmSize:", 0) == 0) return static_cast<rlim_t>(std::stoull(line.substr(7))) * 1024;
+  return 0;
+}
+
+// A mesh whose index would not fit is refused once its faces are counted, before anything large
+// is built, naming the file, the faces and the limit that binds.
+TEST(MeshContainer, RefusesAMeshTooLargeForTheMemoryLeft) {
+  const int n = 100000;  // a fan of 100,000 triangles: about 50 MB to index
+  const std::string path = std::string(FRONTPACK_BINARY_DIR) + "/mesh_too_large_test.off";
+  {
+    std::ofstream out(path);
+    out << "OFF\n" << n + 2 << " " << n << " 0\n0 0 0\n";
+    for (int i = 0; i <= n; ++i) out << std::cos(i * 1e-5) << " " << std::sin(i * 1e-5) << " 0\n";
+    for (int i = 0; i < n; ++i) out << "3 0 " << i + 1 << " " << i + 2 << "\n";
+  }
+  rlimit saved{};
+  ASSERT_EQ(getrlimit(RLIMIT_AS, &saved), 0);
+  const rlim_t mapped = mapped_bytes();
+  ASSERT_GT(mapped, 0u);
+  const rlimit tight{mapped + (rlim_t{40} << 20), saved.rlim_max};  // 40 MB more than is mapped now
+  ASSERT_EQ(setrlimit(RLIMIT_AS, &tight), 0);
+  std::string message;
+  try {
+    MeshContainer::from_file(path);
+  } catch (const std::invalid_argument& e) {
+    message = e.what();
+  }
+  ASSERT_EQ(setrlimit(RLIMIT_AS, &saved), 0);
+  for (const char* word : {"mesh_too_large_test.off", "100000 faces", "50 MB", "ulimit -v", "simplify the surface"})
+    EXPECT_NE(message.find(word), std::string::npos) << "'" << word << "' not in: " << message;
+  // Without the limit the same file gets past the memory check (and is refused as an open fan).
+  testref::expect_invalid([&] { MeshContainer::from_file(path); }, {"mesh_too_large_test.off", "boundary edges"});
+  std::remove(path.c_str());
 }
 
 // Shells that overlap are refused; shells that touch nowhere are a solid and its cavity, or two
