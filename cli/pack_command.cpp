@@ -20,6 +20,7 @@
 #include "core/io/output_paths.hpp"
 #include "core/io/packing_writers.hpp"
 #include "core/io/run_record.hpp"
+#include "core/io/scene_limits.hpp"
 #include "core/io/scene_yaml.hpp"
 #include "core/io/analysis_json.hpp"
 #include "core/metrics/packing_analysis.hpp"
@@ -154,8 +155,10 @@ int run_pack_command(const PackCommandOptions& o) {
     const Activity doing("reading scene '" + o.scene_path + "'");
     scene = load_scene(o.scene_path);
     apply_overrides(scene, o);
-    // Every shape-specific input problem (family, parameters, output formats) before any work.
+    // Every shape-specific input problem (family, parameters, output formats) and what the run
+    // asks of the machine, before any work.
     if (!scene.particle_templates.empty()) check_shape_scene(scene);
+    else check_run_limits(scene, estimate_run_demand(scene, mean_ball_measure(*scene.radii, scene.dimension)), available_memory());
   } catch (...) {
     return report_failure(2);
   }

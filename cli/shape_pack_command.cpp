@@ -13,6 +13,7 @@
 #include "core/io/atomic_file.hpp"
 #include "core/io/output_format.hpp"
 #include "core/io/run_record.hpp"
+#include "core/io/scene_limits.hpp"
 #include "front/pack_shapes_scene.hpp"
 #include "shapes/io/shape_packing_writers.hpp"
 
@@ -24,9 +25,11 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 
 template <int D>
 void check_in(const Scene& scene) {
+  const std::vector<ShapeTemplate<D>> templates = resolve_templates<D>(scene);
   std::vector<std::string> families;
-  for (const ShapeTemplate<D>& t : resolve_templates<D>(scene)) families.push_back(t.prototype.shape->kind());
+  for (const ShapeTemplate<D>& t : templates) families.push_back(t.prototype.shape->kind());
   for (const OutputSpec& out : scene.outputs) check_shape_format<D>(parse_output_format(out.format), families);
+  check_run_limits(scene, estimate_run_demand(scene, mean_measure<D>(templates)), available_memory());
 }
 
 }  // namespace

@@ -6,7 +6,8 @@
 
 namespace fp {
 
-/// Resolves every template and checks that every output format can hold these shapes. Throws
+/// Resolves every template, checks that every output format can hold these shapes and that the
+/// run fits the machine (core/io/scene_limits.hpp). Throws
 /// SceneError (file, line, key) or std::invalid_argument; nothing has been written.
 void check_shape_scene(const Scene& scene);
 

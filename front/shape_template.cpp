@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/io/scene_error.hpp"
+#include "core/sampling/radius_moment.hpp"
 
 namespace fp {
 
@@ -20,6 +21,16 @@ std::vector<ShapeTemplate<D>> resolve_templates(const Scene& scene) {
     out.push_back(std::move(t));
   }
   return out;
+}
+
+template <int D>
+double mean_measure(const std::vector<ShapeTemplate<D>>& templates) {
+  double sum = 0, weights = 0;
+  for (const ShapeTemplate<D>& t : templates) {
+    sum += t.fraction * t.prototype.shape->measure() * std::pow(t.scale_per_size, D) * radius_moment(*t.size, D);
+    weights += t.fraction;
+  }
+  return sum / weights;
 }
 
 template <int D>
@@ -56,6 +67,8 @@ Draft<D> draw_draft(const std::vector<ShapeTemplate<D>>& templates, Rng& rng) {
 
 template std::vector<ShapeTemplate<2>> resolve_templates<2>(const Scene&);
 template std::vector<ShapeTemplate<3>> resolve_templates<3>(const Scene&);
+template double mean_measure<2>(const std::vector<ShapeTemplate<2>>&);
+template double mean_measure<3>(const std::vector<ShapeTemplate<3>>&);
 template Draft<2> draw_draft<2>(const std::vector<ShapeTemplate<2>>&, Rng&);
 template Draft<3> draw_draft<3>(const std::vector<ShapeTemplate<3>>&, Rng&);
 

@@ -38,6 +38,11 @@ struct Draft {
 template <int D>
 std::vector<ShapeTemplate<D>> resolve_templates(const Scene& scene);
 
+/// Mean measure (volume in 3D, area in 2D) of the particles drawn from `templates`: each
+/// prototype's measure times E[(size x scale_per_size)^D], weighted by fraction.
+template <int D>
+double mean_measure(const std::vector<ShapeTemplate<D>>& templates);
+
 /// Draws a template by fraction, a size from its distribution and an orientation (uniform random
 /// rotation: Shoemake's quaternion from three uniforms; 2D: a uniform angle). Deterministic in rng.
 template <int D>

@@ -135,6 +135,15 @@ struct Scene {
   std::vector<OutputSpec> outputs;
   /// Every file the scene was read from (itself, a mesh): no output may replace them.
   std::vector<std::string> read_files;
+  /// Where the keys checked after parsing were written (core/io/scene_limits.hpp), by dotted key:
+  /// "container", "particles", "stop", "stop.particles", "stop.volume_fraction", "packer.radius_pool";
+  /// a key the file does not have is absent.
+  std::map<std::string, SourceSpot> spots;
+  /// The spot of `key`, or the file alone when the scene does not write it.
+  SourceSpot spot(const std::string& key) const {
+    const auto it = spots.find(key);
+    return it != spots.end() ? it->second : SourceSpot{source_path, 0, 0, key};
+  }
 };
 
 }  // namespace fp

@@ -533,7 +533,8 @@ void parse_minimisation(const Value& v, MinimisationOptions& o) {
 
 // `shapes`: the scene has particle templates (the minimisation options are used by them only).
 template <int D>
-void parse_packer(const Value& v, const Container<D>& container, bool shapes, PackerOptions& p) {
+void parse_packer(const Value& v, const Container<D>& container, bool shapes, PackerOptions& p,
+                  std::map<std::string, SourceSpot>& spots) {
   const Map m = v.map();
   m.check_known({"method", "front", "candidate", "pair_order", "contact_bodies", "probe_smallest", "walls", "radius_pool", "contact_tolerance",
                  "grid_cell_factor", "hierarchical_grid_ratio", "seed_point", "minimisation"});
@@ -561,8 +562,11 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
   if (auto x = m.find("walls")) p.walls_as_bodies = x->boolean();
   if (auto x = m.find("radius_pool")) {
     const std::uint64_t n = x->unsigned_integer();
-    if (n < 1 || n > 1000000) x->fail("must be an integer from 1 to 1000000 (got " + x->node().Scalar() + ")");
+    if (n < 1 || n > kMaxRadiusPool)
+      x->fail("must be an integer from 1 to " + std::to_string(kMaxRadiusPool) + " (got " + x->node().Scalar() +
+              "): each placement sorts the pool, so its cost grows with it (experiments/extremes)");
     p.radius_pool = static_cast<int>(n);
+    spots["packer.radius_pool"] = x->spot();
   }
   if (auto x = m.find("contact_tolerance")) {
     const double t = x->number();
@@ -586,18 +590,21 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
   }
 }
 
-void parse_stop(const Value& v, StopCriteria& s) {
+void parse_stop(const Value& v, StopCriteria& s, std::map<std::string, SourceSpot>& spots) {
   const Map m = v.map();
   m.check_known({"particles", "volume_fraction", "time"});
+  spots["stop"] = v.spot();
   if (auto x = m.find("particles")) {
     const std::uint64_t n = x->unsigned_integer(true);
     if (n == 0) x->fail("must be a positive integer (got " + x->node().Scalar() + ")");
     s.max_particles = n;
+    spots["stop.particles"] = x->spot();
   }
   if (auto x = m.find("volume_fraction")) {
     const double phi = x->number();
     if (!(phi > 0 && phi < 1)) x->fail("must be in (0, 1) (got " + x->node().Scalar() + ")");
     s.target_volume_fraction = phi;
+    spots["stop.volume_fraction"] = x->spot();
   }
   if (auto x = m.find("time")) s.time_limit_seconds = x->positive();
 }
@@ -809,12 +816,30 @@ bool parse_particles(const Value& v, const Container<D>& container, Scene& scene
   return false;
 }
 
+/// Lengths whose D-th powers (areas, volumes: the measures every figure is made of) are ordinary
+/// doubles, with room for the sums and ratios of the metrics: 1e-100 <= L <= 1e100. Packings are
+/// exact under scaling by a power of two (tests/front/test_front_far_and_scaled.cpp), so a scene
+/// beyond these bounds loses nothing by being stated in other units.
+void check_length(const Value& where, const std::string& what, double length, int dimension) {
+  if (length >= kMinLength && length <= kMaxLength) return;
+  std::ostringstream os;
+  os.precision(6);
+  os << what << " (" << length << ") is outside [" << kMinLength << ", " << kMaxLength << "]: " << (dimension == 3 ? "volumes" : "areas")
+     << " (its " << (dimension == 3 ? "cube" : "square") << ") would not be ordinary doubles; state the scene in other units "
+     << "(the packing is the same at any scale)";
+  where.fail(os.str());
+}
+
 template <int D>
 void parse_body(const Map& root, Scene& scene, const Context& ctx) {
   const Value container_value = root.get("container", "the region to fill");
+  scene.spots["container"] = container_value.spot();
   ContainerPtr<D> container = parse_container<D>(container_value, ctx);
-  const bool shapes = parse_particles<D>(root.get("particles", kParticleForms), *container, scene);
-  if (auto p = root.find("packer")) parse_packer<D>(*p, *container, shapes, scene.packer);
+  check_length(container_value, "the container's extent", container->bounds().size().maxCoeff(), D);
+  const Value particles_value = root.get("particles", kParticleForms);
+  scene.spots["particles"] = particles_value.spot();
+  const bool shapes = parse_particles<D>(particles_value, *container, scene);
+  if (auto p = root.find("packer")) parse_packer<D>(*p, *container, shapes, scene.packer, scene.spots);
   // A container more than kFarFrameExtent smallest particles across can never be filled (some
   // 10^16 particles): it is packed only around where growth starts, and there its own frame (its
   // centre) would leave coordinates of up to half its extent, too coarse for the contact
@@ -822,6 +847,8 @@ void parse_body(const Map& root, Scene& scene, const Context& ctx) {
   double r_min = std::numeric_limits<double>::infinity(), r_max = 0;
   if (scene.radii) r_min = scene.radii->r_min(), r_max = scene.radii->r_max();
   for (const auto& t : scene.particle_templates) r_min = std::min(r_min, t.size->r_min()), r_max = std::max(r_max, t.size->r_max());
+  check_length(particles_value, "the smallest particle size", r_min, D);
+  check_length(particles_value, "the largest particle size", r_max, D);
   if (container->bounds().size().maxCoeff() > kFarFrameExtent * r_min) {
     Vec<D> seed = container->interior_point() + container->origin();
     if (scene.packer.seed_point)
@@ -866,7 +893,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
     if (auto s = root.find("seed")) scene.seed = s->unsigned_integer();
     if (scene.dimension == 3) parse_body<3>(root, scene, ctx);
     else parse_body<2>(root, scene, ctx);
-    if (auto s = root.find("stop")) parse_stop(*s, scene.stop);
+    if (auto s = root.find("stop")) parse_stop(*s, scene.stop, scene.spots);
     if (auto o = root.find("output")) scene.outputs = parse_outputs(*o);
   } catch (const YAML::Exception& e) {  // not expected: every access is checked first
     ctx.fail(e.mark, "", e.msg);

@@ -76,10 +76,12 @@ inline std::string quoted(const std::string& s) {
   return q + "'";
 }
 
-/// Runs `frontpack <args>` in dir.work(); args are already quoted where needed.
-inline RunResult run_frontpack(const TempDir& dir, const std::string& args) {
+/// Runs `frontpack <args>` in dir.work(), after the shell command `before` if one is given (e.g.
+/// "ulimit -v 1000000"); args are already quoted where needed.
+inline RunResult run_frontpack(const TempDir& dir, const std::string& args, const std::string& before = "") {
   const fs::path out = dir.capture() / "stdout", err = dir.capture() / "stderr";
-  const std::string cmd = "cd " + quoted(dir.work().string()) + " && " + quoted(frontpack_binary()) + " " + args +
+  const std::string cmd = "cd " + quoted(dir.work().string()) + " && " + (before.empty() ? "" : before + " && ") +
+                          quoted(frontpack_binary()) + " " + args +
                           " > " + quoted(out.string()) + " 2> " + quoted(err.string()) + " < /dev/null";
   const int status = std::system(cmd.c_str());
   RunResult r;

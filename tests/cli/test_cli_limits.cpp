@@ -1,0 +1,134 @@
+// Limits checked before any work (core/io/scene_limits.hpp, the length rule of the scene
+// parser): a scene that would exhaust the particle ids or the memory, a pool too large for its
+// particle count, or lengths whose volumes are no ordinary doubles is refused with exit 2 at the
+// key to change, in under 2 s, with nothing written. And the scenes the rule lets through pack
+// and pass their validation.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cli_test_util.hpp"
+#include "refusal_check.hpp"
+
+namespace fptest {
+namespace {
+
+std::string box_scene(const std::string& side, const std::string& radii = "{distribution: uniform, min: 0.01, max: 0.02}") {
+  return "dimension: 3\n"
+         "container: {type: box, min: [0, 0, 0], max: [" + side + ", " + side + ", " + side + "]}\n"
+         "particles: {radius: " + radii + "}\n";
+}
+
+/// A folder holding `s.yaml` with `text` and an existing output that must stay untouched.
+auto scene(const std::string& text) {
+  return [=](const fs::path& w) {
+    write_bytes(w / "s.yaml", text);
+    write_bytes(w / "old.csv", "an existing output, not to be touched\n");
+  };
+}
+
+// A few more than 2 GB at 200 bytes per sphere: 0.74 x 216 / (4/3 pi E[r^3]) = 1.0e7 spheres.
+const std::string kTwoGigabytes = box_scene("6");
+const std::string kOneGigabyteAddressSpace = "ulimit -v 1000000";
+
+TEST(CliLimits, ContainerOfTenToTheElevenSpheresWithoutAStop) {
+  expect_refused(scene(box_scene("100")), "pack s.yaml -o old.csv", 2,
+                 {"s.yaml:2:", "key 'container'", "4.71e+10 particles", "32-bit ids", "stop: {particles: N}"});
+}
+
+TEST(CliLimits, MoreMemoryThanTheProcessMayUse) {
+  expect_refused(scene(kTwoGigabytes), "pack s.yaml -o old.csv", 2,
+                 {"s.yaml:2:", "key 'container'", "200 bytes per particle", "ulimit -v", "particles fit"}, kOneGigabyteAddressSpace);
+}
+
+TEST(CliLimits, TheSameSceneWithAStopCountPacksUnderTheSameLimit) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", kTwoGigabytes + "stop: {particles: 500}\n");
+  const RunResult r = run_frontpack(dir, "pack s.yaml -o out.csv", kOneGigabyteAddressSpace);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("validation     ok"), std::string::npos) << r.out;
+  EXPECT_EQ(lines_of(read_bytes(dir.work() / "out.csv")).size(), 501u);  // header + 500 particles
+}
+
+TEST(CliLimits, StopCountBeyondThirtyTwoBitIds) {
+  expect_refused(scene(box_scene("100") + "stop: {particles: 3000000000}\n"), "pack s.yaml -o old.csv", 2,
+                 {"s.yaml:4:", "key 'stop.particles'", "32-bit ids", "lower it"});
+}
+
+TEST(CliLimits, VolumeFractionThatNeedsTooMuchMemory) {
+  expect_refused(scene(kTwoGigabytes + "stop:\n  volume_fraction: 0.5\n"), "pack s.yaml -o old.csv", 2,
+                 {"s.yaml:5:", "key 'stop.volume_fraction'", "ulimit -v"}, kOneGigabyteAddressSpace);
+}
+
+TEST(CliLimits, ATimeLimitDoesNotBoundTheCount) {
+  expect_refused(scene(box_scene("100") + "stop: {time: 10}\n"), "pack s.yaml -o old.csv", 2,
+                 {"key 'container'", "a time limit does not bound the count"});
+}
+
+TEST(CliLimits, NonSphericalParticlesAreCountedByTheirOwnVolume) {
+  const std::string capsules =
+      "dimension: 3\n"
+      "container: {type: box, min: [0, 0, 0], max: [1000, 1000, 1000]}\n"
+      "particles:\n  - {shape: spherocylinder, aspect_ratio: 0.5, size: {distribution: uniform, min: 0.1, max: 0.2}}\n";
+  expect_refused(scene(capsules), "pack s.yaml -o old.csv", 2, {"s.yaml:2:", "key 'container'", "32-bit ids"});
+}
+
+TEST(CliLimits, ContainerExtentBeyondTenToTheHundred) {
+  expect_refused(scene(box_scene("1e300")), "pack s.yaml -o old.csv", 2,
+                 {"s.yaml:2:", "key 'container'", "(1e+300) is outside [1e-100, 1e+100]", "other units"});
+}
+
+TEST(CliLimits, ContainerExtentThatOverflows) {
+  const std::string text = "dimension: 3\n"
+                           "container: {type: box, min: [-1e308, -1e308, -1e308], max: [1e308, 1e308, 1e308]}\n"
+                           "particles: {radius: {distribution: uniform, min: 1e306, max: 2e306}}\n";
+  expect_refused(scene(text), "pack s.yaml -o old.csv", 2, {"s.yaml:2:", "key 'container'", "(inf) is outside"});
+}
+
+TEST(CliLimits, ContainerTooSmallForOrdinaryVolumes) {
+  expect_refused(scene(box_scene("2e-150", "{distribution: uniform, min: 1e-152, max: 2e-152}")), "pack s.yaml -o old.csv", 2,
+                 {"s.yaml:2:", "key 'container'", "(2e-150) is outside", "volumes (its cube)"});
+}
+
+TEST(CliLimits, ParticlesTooSmallForOrdinaryVolumes) {
+  expect_refused(scene(box_scene("1", "{distribution: constant, value: 1e-120}")), "pack s.yaml -o old.csv", 2,
+                 {"s.yaml:3:", "key 'particles'", "smallest particle size (1e-120)"});
+}
+
+TEST(CliLimits, RectangleBeyondTenToTheHundredSpeaksOfAreas) {
+  const std::string text = "dimension: 2\n"
+                           "container: {type: rectangle, min: [0, 0], max: [1e101, 1]}\n"
+                           "particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}\n";
+  expect_refused(scene(text), "pack s.yaml -o old.csv", 2, {"key 'container'", "areas (its square)"});
+}
+
+TEST(CliLimits, PoolBeyondItsMaximum) {
+  expect_refused(scene(box_scene("0.2") + "packer: {radius_pool: 1025}\n"), "pack s.yaml -o old.csv", 2,
+                 {"s.yaml:4:", "key 'packer.radius_pool'", "from 1 to 1024"});
+}
+
+TEST(CliLimits, PoolTooLargeForTheParticlesTheContainerHolds) {
+  // 0.2 cube: about 377 spheres at most; the 64 radii left in the pool would fail the radii test.
+  expect_refused(scene(box_scene("0.2") + "packer: {radius_pool: 64}\n"), "pack s.yaml -o old.csv", 2,
+                 {"s.yaml:4:", "key 'packer.radius_pool'", "377 particles", "radii test"});
+}
+
+/// Packs `text` with a few seeds: each run must exit 0 with its validation ok.
+void expect_packs_and_validates(const std::string& text) {
+  for (const char* seed : {"1", "2", "3"}) {
+    TempDir dir;
+    write_bytes(dir.work() / "s.yaml", text);
+    const RunResult r = run_frontpack(dir, std::string("pack s.yaml -o out.csv --seed ") + seed);
+    EXPECT_EQ(r.exit_code, 0) << "seed " << seed << ": " << r.err;
+    EXPECT_NE(r.out.find("validation     ok"), std::string::npos) << "seed " << seed << ": " << r.out;
+  }
+}
+
+TEST(CliLimits, APoolTheRuleAcceptsPassesTheValidation) { expect_packs_and_validates(box_scene("0.2") + "packer: {radius_pool: 16}\n"); }
+
+TEST(CliLimits, TheDefaultPoolInAContainerOfAFewParticles) { expect_packs_and_validates(box_scene("0.06")); }
+
+TEST(CliLimits, AHugeContainerWithAStopCountPacks) { expect_packs_and_validates(box_scene("1e17") + "stop: {particles: 2000}\n"); }
+
+}  // namespace
+}  // namespace fptest
