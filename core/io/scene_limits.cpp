@@ -1,5 +1,6 @@
 #include "core/io/scene_limits.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -55,7 +56,7 @@ RunDemand estimate_run_demand(const Scene& scene, double mean_particle_measure) 
     d.particles = static_cast<double>(*scene.stop.max_particles), d.bound_by = "stop.particles";
   const bool shapes = !scene.particle_templates.empty();
   d.bytes_per_particle = shapes ? (D == 3 ? kBytesPerShape3 : kBytesPerShape2) : (D == 3 ? kBytesPerSphere : kBytesPerDisk);
-  d.bytes = d.particles * d.bytes_per_particle;
+  d.bytes = d.particles * d.bytes_per_particle + kBytesPerRun;
   return d;
 }
 
@@ -76,9 +77,9 @@ void check_run_limits(const Scene& scene, const RunDemand& d, const MemoryBudget
     fail_at(scene, d.bound_by, "this run could place about " + num(d.particles) + " particles (" + how + "), more than the " +
                                    num(kMaxIds) + " a packing can number (32-bit ids)" + remedy);
   if (d.bytes > static_cast<double>(memory.bytes)) {
-    const double fits = static_cast<double>(memory.bytes) / d.bytes_per_particle;
+    const double fits = std::max(0.0, static_cast<double>(memory.bytes) - kBytesPerRun) / d.bytes_per_particle;
     fail_at(scene, d.bound_by, "this run could place about " + num(d.particles) + " particles (" + how + "), needing about " +
-                                   bytes_text(d.bytes) + " at " + num(d.bytes_per_particle) + " bytes per particle, more than the " +
+                                   bytes_text(d.bytes) + " at " + num(d.bytes_per_particle) + " bytes per particle and 300 MB for the run, more than the " +
                                    bytes_text(static_cast<double>(memory.bytes)) + " this process may use (" + memory.source +
                                    ")" + remedy + " (about " + num(fits) + " particles fit)");
   }

@@ -9,8 +9,8 @@
 //         v: the mean particle measure (volume in 3D, area in 2D) of the requested sizes;
 //         phi_max: the densest packing of equal balls (pi/sqrt(18) in 3D, pi/sqrt(12) in 2D),
 //         which no packing of the front was measured to exceed;
-//   refused when N > 2^31 - 1 (particle ids), when N x bytes per particle > the memory this
-//   process may use (core/system/available_memory.hpp), or when radius_pool is so large against
+//   refused when N > 2^31 - 1 (particle ids), when N x bytes per particle + 300 MB > the memory
+//   this process may use (core/system/available_memory.hpp), or when radius_pool is so large against
 //   N that the radii left in the pool at the end would fail the radii test of the validation
 //   (pool / (N + pool) > 1.95 / sqrt(N), the Kolmogorov-Smirnov critical distance at 0.001).
 #include "core/io/scene.hpp"
@@ -18,10 +18,15 @@
 
 namespace fp {
 
-/// Bytes per particle of a whole `frontpack pack` run (packer, analysis, validation, writers),
-/// measured as peak RSS over particles (experiments/extremes/RESULTS.md, "Limits"): 1M spheres
-/// 174 B, 1M disks 130 B, 45,000 2D capsules 430 B; rounded up.
+/// Bytes per particle of a whole `frontpack pack` run (packer, analysis, validation, writers):
+/// the growth of peak RSS per particle between a small and a large run (experiments/extremes/
+/// RESULTS.md, "Limits": spheres 187, disks 147, 2D capsules 157, 3D capsules too few to
+/// measure), rounded up; shapes with many vertices or members hold their own scaled copies, so
+/// shapes get a wide margin.
 inline constexpr double kBytesPerSphere = 200, kBytesPerDisk = 150, kBytesPerShape2 = 500, kBytesPerShape3 = 2000;
+/// What a run needs whatever its size: the program (~25 MB) and the cache of display surfaces
+/// that VTU outputs of non-spherical particles keep (at most 256 MB).
+inline constexpr double kBytesPerRun = 300e6;
 
 struct RunDemand {
   double container_measure = 0;      ///< volume (3D) or area (2D)
@@ -31,7 +36,7 @@ struct RunDemand {
   double particles = 0;              ///< N: what the run may place
   std::string bound_by;              ///< the key of the scene that sets N ("container" when nothing stops earlier)
   double bytes_per_particle = 0;
-  double bytes = 0;                  ///< N x bytes per particle
+  double bytes = 0;                  ///< N x bytes per particle + kBytesPerRun
 };
 
 /// The demand of `scene` whose particles have mean measure `mean_particle_measure`.
