@@ -224,6 +224,22 @@ def cases(folder):
                 scene(2, f"{{type: polygon, vertices: {yaml_list(many_gon(100000))}}}", uniform(0.01, 0.02))))
     out.append(("degenerate", "polygon with 10^4 vertices", None,
                 scene(2, f"{{type: polygon, vertices: {yaml_list(many_gon(10000))}}}", uniform(0.01, 0.02))))
+    # Limits (checked before any work since issue 9): a run that could never end well is refused.
+    big = lambda side: f"{{type: box, min: [0, 0, 0], max: [{side!r}, {side!r}, {side!r}]}}"
+    out.append(("limits", "box 1e300 wide", None, scene(3, big(1e300), uniform(0.01, 0.02))))
+    out.append(("limits", "box from -1e308 to 1e308", None,
+                scene(3, "{type: box, min: [-1e308, -1e308, -1e308], max: [1e308, 1e308, 1e308]}", uniform(1e306, 2e306))))
+    out.append(("limits", "box 2e-150 wide, radii 1e-152", None, scene(3, big(2e-150), uniform(1e-152, 2e-152))))
+    out.append(("limits", "box 100 wide, no stop (5e10 spheres)", None, scene(3, big(100.0), uniform(0.01, 0.02))))
+    out.append(("limits", "box 1e17 wide, no stop", None, scene(3, big(1e17), uniform(0.01, 0.02))))
+    out.append(("limits", "box 1e17 wide, stop at 20000", None,
+                scene(3, big(1e17), uniform(0.01, 0.02), stop="{particles: 20000}")))
+    out.append(("limits", "box 15 wide, no stop (32 GB)", None, scene(3, big(15.0), uniform(0.01, 0.02))))
+    out.append(("limits", "radius_pool 1000000, box 0.2", None,
+                scene(3, big(0.2), uniform(0.01, 0.02), packer="{radius_pool: 1000000}")))
+    for pool in [16, 64, 256]:
+        out.append(("limits", f"radius_pool {pool}, box 0.2 (about 300 spheres)", None,
+                    scene(3, big(0.2), uniform(0.01, 0.02), packer=f"{{radius_pool: {pool}}}")))
     return out
 
 
@@ -250,7 +266,8 @@ def run_case(binary, folder, name, text, timeout):
         r = json.loads(record.read_text())
         row["n"] = r["n"]
         m = r["metrics"]
-        row["vf"] = f"{m['volume_fraction_container']:.4f}"
+        vf = m["volume_fraction_container"]
+        row["vf"] = "nan" if vf is None else f"{vf:.4f}"  # JSON has no NaN: the record writes null
         row["pack_s"] = f"{r['timings']['pack']:.2f}"
     if out.exists():
         try:
@@ -299,13 +316,34 @@ def write_results(argv, binary):
             ratio = dvf = ""
             if base and r["n"] and base["n"]:
                 ratio = f"{int(r['n']) / int(base['n']):.4f}"
-                if r["vf"] and base["vf"]:
+                if r["vf"] not in ("", "nan") and base["vf"] not in ("", "nan"):
                     dvf = f"{float(r['vf']) - float(base['vf']):+.4f}"
             rows.append([group, name, r["exit"], r["validate"], r["n"], r["vf"], ratio, dvf, r["pack_s"], r["wall_s"],
                          r["message"].replace("|", "/")])
         lines += [runkit.table(["group", "case", "exit", "val", "N", "VF container", "N / ref", "ΔVF", "pack s",
                                 "wall s", "last message"], rows), ""]
+    lines += memory_lines()
     (HERE / "RESULTS.md").write_text("\n".join(lines))
+
+
+def memory_lines():
+    """The section measured by memory.py (memory.csv), the figures behind the limits' memory rule."""
+    path = HERE / "memory.csv"
+    if not path.exists():
+        return []
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    return ["## Limits: memory per particle and per mesh face", "",
+            "Command: `FRONTPACK=build/cli/frontpack /usr/bin/python3 experiments/extremes/memory.py` (same machine;",
+            "memory does not depend on the load). Each case packed twice (`-o out.csv`, peak RSS by `/usr/bin/time -f %M`);",
+            "`bytes per unit` is the slope (RSS_large - RSS_small) / (N_large - N_small), the figure the limits use",
+            "(core/io/scene_limits.hpp: 200 per sphere, 150 per disk, 500 per 2D shape, 2000 per 3D shape, plus 300 MB per",
+            "run; core/geometry/mesh_container.cpp: 500 per face). The last row writes VTU, whose display surfaces of",
+            "non-spherical particles are cached up to 256 MB (shapes/io/shape_packing_writers.cpp).", "",
+            runkit.table(["case", "unit", "N small", "RSS small (kB)", "N large", "RSS large (kB)", "bytes per unit",
+                          "RSS / N (bytes)"],
+                         [[r["case"], r["unit"], r["n_small"], r["rss_small_kb"], r["n_large"], r["rss_large_kb"],
+                           r["bytes_per_unit"], r["rss_over_n"]] for r in rows]), ""]
 
 
 def main():
