@@ -13,12 +13,16 @@ namespace fp {
 template <int D>
 class ContactSolver {
  public:
-  /// Most solutions any solver returns for one call (circle-cylinder intersections give 4).
+  /// Most solutions the analytic sphere solver returns for one call (circle-cylinder
+  /// intersections give 4); the buffer the sphere front passes.
   static constexpr int kMaxSolutions = 4;
+  /// The buffer the general front passes: a wrapper of non-convex particles (clusters) can have
+  /// more than 4 solutions.
+  static constexpr int kMaxCandidates = 16;
   virtual ~ContactSolver() = default;
-  /// `fixed` holds exactly D bodies; writes up to kMaxSolutions placements into `out`
-  /// and returns how many. Never returns a position it has not solved for: degenerate
-  /// configurations return 0.
+  /// `fixed` holds exactly D bodies; writes up to out.size() placements into `out` and returns
+  /// how many. Never returns a position it has not solved for: degenerate configurations
+  /// return 0.
   virtual int solve(std::span<const Body<D>> fixed, const Mobile<D>& mobile,
                     std::span<Placement<D>> out) const = 0;
 };

@@ -1,7 +1,11 @@
 #include "contact/solver_registry.hpp"
 
+#include <algorithm>
+
+#include "contact/ball_wrapper_solver.hpp"
 #include "contact/minimisation_solver.hpp"
 #include "contact/sphere_contact_solver.hpp"
+#include "shapes/cluster_shape.hpp"
 #include "shapes/sphere_shape.hpp"
 
 namespace fp {
@@ -9,32 +13,45 @@ namespace fp {
 template <int D>
 SolverRegistry<D>::SolverRegistry(const NarrowPhase<D>& narrow_phase, const MinimisationOptions& options)
     : default_(std::make_shared<MinimisationSolver<D>>(narrow_phase, options)) {
+  const char* balls[] = {SphereShape<D>::kKind, ClusterShape<D>::kKind};
+  auto wrapper = std::make_shared<BallWrapperSolver<D>>();
+  for (const char* mobile : balls) {
+    add_pair("wall", mobile, wrapper);
+    for (const char* fixed : balls) add_pair(fixed, mobile, wrapper);
+  }
   auto analytic = std::make_shared<SphereContactSolver<D>>();
-  override_pair(SphereShape<D>::kKind, SphereShape<D>::kKind, analytic);
-  override_pair("wall", SphereShape<D>::kKind, analytic);
+  add_pair(SphereShape<D>::kKind, SphereShape<D>::kKind, analytic);
+  add_pair("wall", SphereShape<D>::kKind, analytic);
 }
 
 template <int D>
-void SolverRegistry<D>::override_pair(const std::string& fixed_kind, const std::string& mobile_kind,
-                                      std::shared_ptr<const ContactSolver<D>> solver) {
-  pairs_[{fixed_kind, mobile_kind}] = std::move(solver);
+void SolverRegistry<D>::add_pair(const std::string& fixed_kind, const std::string& mobile_kind,
+                                 std::shared_ptr<const ContactSolver<D>> solver) {
+  pairs_[{fixed_kind, mobile_kind}].push_back(std::move(solver));
 }
 
 template <int D>
 const ContactSolver<D>& SolverRegistry<D>::pick(std::span<const Body<D>> fixed, const Mobile<D>& mobile) const {
-  if (pairs_.empty()) return *default_;
+  if (pairs_.empty() || fixed.empty()) return *default_;
   // A mobile without a shape is a sphere of its radius (the sphere fast path's form), as a fixed
   // body without a particle is: the minimisation solver cannot solve it (it needs the shape).
   const std::string mobile_kind = mobile.shape ? mobile.shape->kind() : SphereShape<D>::kKind;
-  const ContactSolver<D>* common = nullptr;
-  for (const Body<D>& b : fixed) {
+  const auto solvers_of = [&](const Body<D>& b) -> const std::vector<std::shared_ptr<const ContactSolver<D>>>* {
     const std::string fixed_kind = b.is_wall() ? "wall" : b.shaped ? b.shaped->shape->kind() : SphereShape<D>::kKind;
     const auto it = pairs_.find({fixed_kind, mobile_kind});
-    if (it == pairs_.end()) return *default_;
-    if (common && common != it->second.get()) return *default_;
-    common = it->second.get();
+    return it == pairs_.end() ? nullptr : &it->second;
+  };
+  const auto* first = solvers_of(fixed[0]);
+  if (!first) return *default_;
+  for (auto candidate = first->rbegin(); candidate != first->rend(); ++candidate) {
+    bool everywhere = true;
+    for (std::size_t i = 1; i < fixed.size() && everywhere; ++i) {
+      const auto* list = solvers_of(fixed[i]);
+      everywhere = list && std::find(list->begin(), list->end(), *candidate) != list->end();
+    }
+    if (everywhere) return **candidate;
   }
-  return common ? *common : *default_;
+  return *default_;
 }
 
 template class SolverRegistry<2>;

@@ -1,14 +1,17 @@
 #pragma once
-// Which contact solver places a mobile particle against given fixed bodies. Keyed by shape-kind
-// pairs (fixed kind, mobile kind); walls are the kind "wall". Minimisation is the default for
-// every pair; a pair-specific solver (e.g. the analytic sphere solver for sphere-sphere and
-// wall-sphere) is used when it is registered for EVERY pair of the problem, so a sphere placed
-// against two spheres and a capsule still goes to minimisation.
+// Which contact solver places a mobile particle against given fixed bodies. Solvers are
+// registered for shape-kind pairs (fixed kind, mobile kind); walls are the kind "wall".
+// Minimisation is the default for every pair. A problem goes to the most recently registered
+// solver that is registered for EVERY (fixed, mobile) pair of the problem, else to the default:
+// the ball wrapper covers spheres, clusters and walls, and the analytic sphere solver, registered
+// after it, takes the problems of spheres and walls alone; a sphere placed against two spheres and
+// a capsule still goes to minimisation.
 #include <map>
 #include <memory>
 #include <span>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "contact/contact_solver.hpp"
 #include "contact/narrow_phase.hpp"
@@ -19,12 +22,14 @@ namespace fp {
 template <int D>
 class SolverRegistry {
  public:
-  /// The default registry: minimisation everywhere, analytic sphere solver for sphere/wall pairs.
+  /// The default registry: minimisation everywhere; the ball wrapper for spheres, clusters and
+  /// walls; the analytic sphere solver for spheres and walls.
   SolverRegistry(const NarrowPhase<D>& narrow_phase, const MinimisationOptions& options);
 
   void set_default(std::shared_ptr<const ContactSolver<D>> solver) { default_ = std::move(solver); }
-  void override_pair(const std::string& fixed_kind, const std::string& mobile_kind,
-                     std::shared_ptr<const ContactSolver<D>> solver);
+  /// Registers `solver` for (fixed_kind, mobile_kind); it takes precedence over those registered
+  /// before it wherever it covers every pair of a problem.
+  void add_pair(const std::string& fixed_kind, const std::string& mobile_kind, std::shared_ptr<const ContactSolver<D>> solver);
 
   /// The solver for this problem (never null).
   const ContactSolver<D>& pick(std::span<const Body<D>> fixed, const Mobile<D>& mobile) const;
@@ -33,7 +38,8 @@ class SolverRegistry {
 
  private:
   std::shared_ptr<const ContactSolver<D>> default_;
-  std::map<std::pair<std::string, std::string>, std::shared_ptr<const ContactSolver<D>>> pairs_;
+  /// Per pair, its solvers in registration order (the last one first in precedence).
+  std::map<std::pair<std::string, std::string>, std::vector<std::shared_ptr<const ContactSolver<D>>>> pairs_;
 };
 
 }  // namespace fp

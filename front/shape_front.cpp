@@ -373,7 +373,7 @@ class ShapeFront {
     int best_rank = 2;
     std::array<Body<D>, D> fixed;
     fixed[0] = Body<D>::of_particle(p0, s0);
-    std::array<Placement<D>, ContactSolver<D>::kMaxSolutions> out;
+    std::array<Placement<D>, ContactSolver<D>::kMaxCandidates> out;
     const ContactSolver<D>& fallback = registry_.default_solver();
 
     auto consider = [&](int i, int j) -> bool {

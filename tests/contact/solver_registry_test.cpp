@@ -1,10 +1,12 @@
 // The solver registry (contact/solver_registry.cpp): which contact solver a problem goes to.
-// Minimisation is the default for every pair; the analytic sphere solver is registered for
-// sphere-sphere and wall-sphere and is used only when EVERY pair of the problem has it.
+// Minimisation is the default for every pair; a registered solver is used only when EVERY pair
+// of the problem has it, the latest registered first: the analytic sphere solver for spheres and
+// walls alone, the ball wrapper where clusters join them.
 #include <gtest/gtest.h>
 
 #include <atomic>
 
+#include "contact/ball_wrapper_solver.hpp"
 #include "contact/solver_registry.hpp"
 #include "contact/sphere_contact_solver.hpp"
 #include "general_contact_support.hpp"
@@ -15,6 +17,10 @@ namespace {
 template <int D>
 bool is_analytic(const ContactSolver<D>& s) {
   return dynamic_cast<const SphereContactSolver<D>*>(&s) != nullptr;
+}
+template <int D>
+bool is_ball_wrapper(const ContactSolver<D>& s) {
+  return dynamic_cast<const BallWrapperSolver<D>*>(&s) != nullptr;
 }
 template <int D>
 bool is_minimisation(const ContactSolver<D>& s) {
@@ -85,6 +91,25 @@ void picks_round() {
   // analytic solver, which needs no shape (the minimisation solver cannot solve it).
   for (int i = 0; i < D; ++i) f[i] = Body<D>::sphere(spheres[i].pose.position, 1.0, i);
   EXPECT_TRUE(is_analytic<D>(reg.pick(f, plain_sphere<D>(1.0))));
+
+  // Clusters with spheres and walls: the ball wrapper, mobile or fixed; with a capsule: minimisation.
+  std::vector<Ball<D>> members(2);
+  members[1].center[0] = 1.0;
+  members[0].radius = members[1].radius = 0.6;
+  const auto cluster = std::make_shared<ClusterShape<D>>(members);
+  const Mobile<D> cluster_mobile = Mobile<D>::of_shape(cluster, Mat<D>::Identity());
+  std::array<Particle<D>, D> clusters;
+  for (int i = 0; i < D; ++i) clusters[i] = particle<D>(cluster, spheres[i].pose.position);
+  for (int i = 0; i < D; ++i) f[i] = Body<D>::of_particle(spheres[i], i);
+  EXPECT_TRUE(is_ball_wrapper<D>(reg.pick(f, cluster_mobile)));
+  f[0] = Body<D>::of_wall(wall);
+  EXPECT_TRUE(is_ball_wrapper<D>(reg.pick(f, cluster_mobile)));
+  f[D - 1] = Body<D>::of_particle(clusters[D - 1], D - 1);
+  EXPECT_TRUE(is_ball_wrapper<D>(reg.pick(f, sphere_mobile)));
+  EXPECT_TRUE(is_ball_wrapper<D>(reg.pick(f, plain_sphere<D>(1.0))));
+  f[D - 1] = Body<D>::of_particle(capsules[D - 1], D - 1);
+  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, cluster_mobile)));
+  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, sphere_mobile)));
 }
 
 TEST(SolverRegistry, Picks2D) { picks_round<2>(); }
@@ -108,31 +133,35 @@ void override_round() {
   std::array<Body<D>, D> f;
   for (int i = 0; i < D; ++i) f[i] = Body<D>::of_particle(capsules[i], i);
 
-  // Capsule against capsules overridden: used for all-capsule problems only.
+  // Capsule against capsules registered: used for all-capsule problems only.
   auto counting = std::make_shared<CountingSolver<D>>();
-  reg.override_pair("spherocylinder", "spherocylinder", counting);
+  reg.add_pair("spherocylinder", "spherocylinder", counting);
   EXPECT_EQ(&reg.pick(f, capsule_mobile), counting.get());
   std::array<Placement<D>, ContactSolver<D>::kMaxSolutions> out;
   reg.pick(f, capsule_mobile).solve(f, capsule_mobile, out);
   EXPECT_EQ(counting->calls, 1);
   f[0] = Body<D>::of_particle(spheres[0], 0);
   EXPECT_TRUE(is_minimisation<D>(reg.pick(f, capsule_mobile)));  // sphere-capsule has no override
-  reg.override_pair("sphere", "spherocylinder", counting);       // now every pair has the same one
+  reg.add_pair("sphere", "spherocylinder", counting);            // now every pair has the same one
   EXPECT_EQ(&reg.pick(f, capsule_mobile), counting.get());
 
-  // Replacing the analytic sphere-sphere solver: wall + spheres now mixes two solvers -> default.
+  // A later solver for sphere-sphere takes the all-sphere problems; wall + spheres, which it does
+  // not cover, stays with the analytic solver (registered for both pairs).
   auto other = std::make_shared<CountingSolver<D>>();
-  reg.override_pair("sphere", "sphere", other);
+  reg.add_pair("sphere", "sphere", other);
   for (int i = 0; i < D; ++i) f[i] = Body<D>::of_particle(spheres[i], i);
   EXPECT_EQ(&reg.pick(f, sphere_mobile), other.get());
   const Wall<D> wall = Wall<D>::plane(Vec<D>::Zero(), Vec<D>::UnitX());
   f[0] = Body<D>::of_wall(wall);
-  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, sphere_mobile)));
+  EXPECT_TRUE(is_analytic<D>(reg.pick(f, sphere_mobile)));
+  reg.add_pair("wall", "sphere", other);  // now it covers both
+  EXPECT_EQ(&reg.pick(f, sphere_mobile), other.get());
 
-  // A new default.
+  // A new default: what no registered solver covers (a sphere against a capsule).
   auto fallback = std::make_shared<CountingSolver<D>>();
   reg.set_default(fallback);
   EXPECT_EQ(&reg.default_solver(), fallback.get());
+  f[D - 1] = Body<D>::of_particle(capsules[D - 1], D - 1);
   EXPECT_EQ(&reg.pick(f, sphere_mobile), fallback.get());
 }
 

@@ -1,0 +1,367 @@
+// The ball wrapper solver (contact/ball_wrapper_solver.cpp): spheres and clusters (disks and
+// clusters of disks in 2D) against each other and the walls, by wrapper intersection.
+//  1. every returned position touches each fixed body within 1e-9 of the smaller size and
+//     overlaps none, by the independent long-double gaps of general_contact_support.hpp;
+//  2. the positions are exactly those of an independent brute force (every choice of members,
+//     long-double trilateration of the member spheres, kept when it overlaps nothing);
+//  3. every position the minimisation solver finds is one of them (and how many more the
+//     wrapper finds is printed);
+//  4. sphere problems give the analytic sphere solver's positions; far apart gives none;
+//  5. extremes: size ratio 1:100, coordinates offset by 1e6, overlapping members.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "contact/ball_wrapper_solver.hpp"
+#include "contact/sphere_contact_solver.hpp"
+#include "general_contact_support.hpp"
+
+namespace fp::general_test {
+namespace {
+
+constexpr double kTol = 1e-9;  // the contact accuracy, relative to the smaller size
+
+template <int D>
+using Out = std::array<Placement<D>, ContactSolver<D>::kMaxCandidates>;
+
+template <int D>
+std::span<const Placement<D>> first(const Out<D>& out, int n) {
+  return {out.data(), static_cast<std::size_t>(n)};
+}
+
+// ================================================================ 1. touching and overlap-free
+
+struct Tally {
+  int built = 0, with_solution = 0, solutions = 0, known_found = 0;
+  double worst = 0;
+};
+
+template <int D>
+Tally run_constructed(const char* name, Kind mobile, const std::array<Kind, D>& fixed, int trials, std::uint64_t seed,
+                      const Sizes& sizes = Sizes{}) {
+  NarrowPhase<D> np;
+  const BallWrapperSolver<D> solver;
+  Rng rng(seed);
+  Tally t;
+  for (int trial = 0; trial < trials; ++trial) {
+    Problem<D> pb;
+    if (!construct_problem<D>(pb, np, mobile, fixed, sizes, rng)) continue;
+    ++t.built;
+    Out<D> out;
+    const int n = solver.solve(pb.span(), pb.mobile(), out);
+    CheckResult cr;
+    EXPECT_TRUE(check_placements<D>(pb, first<D>(out, n), kTol, &cr)) << name << " trial " << trial;
+    t.worst = std::max(t.worst, cr.worst);
+    t.solutions += n;
+    t.with_solution += n > 0;
+    const auto [k, dist] = closest<D>(first<D>(out, n), pb.known);
+    t.known_found += k >= 0 && dist <= 1e-7 * pb.mobile_shape->bounding_radius();
+  }
+  std::printf("  %dD %-36s %3d problems, %3d solved, %4d positions, known found %5.1f %%, worst |gap|/tol %.2g\n", D, name,
+              t.built, t.with_solution, t.solutions, 100.0 * t.known_found / std::max(1, t.built), t.worst);
+  EXPECT_GE(t.built, trials * 9 / 10) << name << ": the construction failed too often";
+  return t;
+}
+
+// The constructed position is a solution of the problem; the wrapper is exact, so it finds it
+// unless the problem has more than kMaxCandidates positions (never seen here): 100 %.
+TEST(BallWrapperSolver, EveryPositionTouchesEveryBodyAndOverlapsNone2D) {
+  using K = Kind;
+  struct Case { const char* name; K mobile; std::array<K, 2> fixed; };
+  const Case cases[] = {
+      {"cluster | cluster cluster", K::Cluster, {K::Cluster, K::Cluster}},
+      {"cluster | sphere sphere", K::Cluster, {K::Sphere, K::Sphere}},
+      {"sphere | cluster cluster", K::Sphere, {K::Cluster, K::Cluster}},
+      {"cluster | plane cluster", K::Cluster, {K::Plane, K::Cluster}},
+      {"cluster | sphere-wall cluster", K::Cluster, {K::SphereWall, K::Cluster}},
+      {"sphere | plane cluster", K::Sphere, {K::Plane, K::Cluster}},
+  };
+  std::uint64_t seed = 7000;
+  for (const Case& c : cases) {
+    const Tally t = run_constructed<2>(c.name, c.mobile, c.fixed, 60, seed++);
+    EXPECT_EQ(t.known_found, t.built) << c.name;
+  }
+}
+
+TEST(BallWrapperSolver, EveryPositionTouchesEveryBodyAndOverlapsNone3D) {
+  using K = Kind;
+  struct Case { const char* name; K mobile; std::array<K, 3> fixed; };
+  const Case cases[] = {
+      {"cluster | cluster x3", K::Cluster, {K::Cluster, K::Cluster, K::Cluster}},
+      {"cluster | sphere x3", K::Cluster, {K::Sphere, K::Sphere, K::Sphere}},
+      {"sphere | cluster x3", K::Sphere, {K::Cluster, K::Cluster, K::Cluster}},
+      {"cluster | plane cluster cluster", K::Cluster, {K::Plane, K::Cluster, K::Cluster}},
+      {"cluster | plane plane cluster", K::Cluster, {K::Plane, K::Plane, K::Cluster}},
+      {"cluster | sphere-wall cluster sphere", K::Cluster, {K::SphereWall, K::Cluster, K::Sphere}},
+      {"cluster | cylinder-wall cluster x2", K::Cluster, {K::CylinderWall, K::Cluster, K::Cluster}},
+      {"sphere | plane cluster sphere", K::Sphere, {K::Plane, K::Cluster, K::Sphere}},
+  };
+  std::uint64_t seed = 8000;
+  for (const Case& c : cases) {
+    const Tally t = run_constructed<3>(c.name, c.mobile, c.fixed, 60, seed++);
+    EXPECT_EQ(t.known_found, t.built) << c.name;
+  }
+}
+
+// ================================================================== 2. independent brute force
+
+using LD = long double;
+
+/// A ball of the independent reference, in long double.
+template <int D>
+struct BallL {
+  VL<D> c;
+  LD r;
+};
+
+/// The member balls of a fixed body or the mobile (at offset 0), from the shape's own members.
+template <int D>
+std::vector<BallL<D>> balls_of(const Shape<D>& s, const Mat<D>& rotation, const Vec<D>& position) {
+  std::vector<BallL<D>> out;
+  if (const auto* c = dynamic_cast<const ClusterShape<D>*>(&s))
+    for (const Ball<D>& b : c->members()) out.push_back({ld<D>(position) + ld<D>(rotation * b.center), b.radius});
+  else
+    out.push_back({ld<D>(position), s.bounding_radius()});
+  return out;
+}
+
+/// Points at distance r[i] from c[i] for every i: 2 circles (2D), 3 spheres (3D), in long double.
+template <int D>
+std::vector<VL<D>> trilaterate(const std::array<VL<D>, D>& c, const std::array<LD, D>& r) {
+  std::vector<VL<D>> out;
+  // Radical hyperplanes against sphere 0: 2 (c_i - c_0).x = r0^2 - ri^2 + |c_i|^2 - |c_0|^2.
+  Eigen::Matrix<LD, D - 1, D> A;
+  Eigen::Matrix<LD, D - 1, 1> b;
+  for (int i = 1; i < D; ++i) {
+    A.row(i - 1) = 2 * (c[i] - c[0]).transpose();
+    b[i - 1] = r[0] * r[0] - r[i] * r[i] + c[i].squaredNorm() - c[0].squaredNorm();
+  }
+  // Particular solution (least norm) and the null direction of A.
+  const Eigen::JacobiSVD<Eigen::Matrix<LD, D - 1, D>> svd(A, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  if (svd.singularValues()[D - 2] <= 1e-12L * svd.singularValues()[0]) return out;
+  const VL<D> p = svd.solve(b);
+  const VL<D> u = svd.matrixV().col(D - 1);
+  // |p + t u - c0|^2 = r0^2.
+  const VL<D> q = p - c[0];
+  const LD bq = q.dot(u), cq = q.squaredNorm() - r[0] * r[0];
+  const LD disc = bq * bq - cq;
+  if (disc < 0) return out;
+  const LD s = std::sqrt(disc);
+  out.push_back(p + (-bq + s) * u);
+  if (s > 0) out.push_back(p + (-bq - s) * u);
+  return out;
+}
+
+/// Every position of the mobile touching each body and overlapping none, by brute force over
+/// member choices (particles only: spheres and clusters).
+template <int D>
+std::vector<Vec<D>> brute_force(const Problem<D>& pb) {
+  const auto mob = balls_of<D>(*pb.mobile_shape, pb.mobile_rotation, Vec<D>::Zero());
+  std::array<std::vector<BallL<D>>, D> fixed;
+  for (int i = 0; i < D; ++i) {
+    const Particle<D>& p = *pb.fixed[i].shaped;
+    fixed[i] = balls_of<D>(*p.shape, p.pose.rotation, p.pose.position);
+  }
+  // Every choice: one (fixed member, mobile member) per body.
+  std::vector<Vec<D>> found;
+  std::array<std::size_t, D> k{}, j{};
+  const auto valid = [&](const VL<D>& x) {
+    for (int i = 0; i < D; ++i)
+      for (const auto& f : fixed[i])
+        for (const auto& m : mob)
+          if ((x + m.c - f.c).norm() - f.r - m.r < -kTol * std::min(f.r, m.r)) return false;
+    return true;
+  };
+  const double scale = pb.mobile_shape->bounding_radius();
+  std::function<void(int)> choose = [&](int i) {
+    if (i == D) {
+      std::array<VL<D>, D> c;
+      std::array<LD, D> r;
+      for (int a = 0; a < D; ++a) {
+        c[a] = fixed[a][k[a]].c - mob[j[a]].c;
+        r[a] = fixed[a][k[a]].r + mob[j[a]].r;
+      }
+      for (const VL<D>& x : trilaterate<D>(c, r)) {
+        if (!valid(x)) continue;
+        Vec<D> xd;
+        for (int a = 0; a < D; ++a) xd[a] = static_cast<double>(x[a]);
+        bool duplicate = false;
+        for (const Vec<D>& y : found) duplicate = duplicate || (xd - y).norm() <= 1e-9 * scale;
+        if (!duplicate) found.push_back(xd);
+      }
+      return;
+    }
+    for (k[i] = 0; k[i] < fixed[i].size(); ++k[i])
+      for (j[i] = 0; j[i] < mob.size(); ++j[i]) choose(i + 1);
+  };
+  choose(0);
+  return found;
+}
+
+template <int D>
+void brute_force_round(int trials, std::uint64_t seed) {
+  NarrowPhase<D> np;
+  const BallWrapperSolver<D> solver;
+  Rng rng(seed);
+  int built = 0, positions = 0, several = 0;
+  for (int trial = 0; trial < trials; ++trial) {
+    Problem<D> pb;
+    std::array<Kind, D> kinds;
+    kinds.fill(Kind::Cluster);
+    if (!construct_problem<D>(pb, np, Kind::Cluster, kinds, Sizes{}, rng)) continue;
+    ++built;
+    Out<D> out;
+    const int n = solver.solve(pb.span(), pb.mobile(), out);
+    const std::vector<Vec<D>> ref = brute_force<D>(pb);
+    positions += n;
+    several += ref.size() > 2;
+    const double scale = pb.mobile_shape->bounding_radius();
+    ASSERT_EQ(static_cast<std::size_t>(n), ref.size()) << "trial " << trial << pb.literal();
+    for (const Vec<D>& x : ref) {
+      const auto [q, dist] = closest<D>(first<D>(out, n), x);
+      EXPECT_LE(dist, 1e-9 * scale) << "trial " << trial << ": brute-force position " << vec_literal<D>(x) << " missing";
+    }
+  }
+  std::printf("  %dD cluster x%d: %d problems, %d positions, %d with more than 2 (non-convex wrappers)\n", D, D + 1, built,
+              positions, several);
+  EXPECT_GE(built, trials * 9 / 10);
+}
+
+TEST(BallWrapperSolver, SameAsBruteForce2D) { brute_force_round<2>(150, 7100); }
+TEST(BallWrapperSolver, SameAsBruteForce3D) { brute_force_round<3>(100, 8100); }
+
+// =============================================================== 3. against the minimisation
+
+template <int D>
+void minimisation_round(int trials, std::uint64_t seed) {
+  NarrowPhase<D> np;
+  const BallWrapperSolver<D> wrapper;
+  MinimisationOptions opt;
+  const MinimisationSolver<D> minimisation(np, opt);
+  Rng rng(seed);
+  int built = 0, by_minimisation = 0, by_wrapper = 0, shared = 0;
+  for (int trial = 0; trial < trials; ++trial) {
+    Problem<D> pb;
+    std::array<Kind, D> kinds;
+    kinds.fill(Kind::Cluster);
+    if (!construct_problem<D>(pb, np, Kind::Cluster, kinds, Sizes{}, rng)) continue;
+    ++built;
+    Out<D> w, m;
+    const int nw = wrapper.solve(pb.span(), pb.mobile(), w);
+    const int nm = minimisation.solve(pb.span(), pb.mobile(), m);
+    by_wrapper += nw, by_minimisation += nm;
+    for (int k = 0; k < nm; ++k) {
+      const auto [q, dist] = closest<D>(first<D>(w, nw), m[k].position);
+      // Minimisation stops at gap_tolerance (1e-6 of the size): its positions are that close.
+      const bool found = dist <= 1e-5 * pb.mobile_shape->bounding_radius();
+      shared += found;
+      EXPECT_TRUE(found) << "trial " << trial << ": minimisation position " << vec_literal<D>(m[k].position)
+                         << " is not a wrapper position" << pb.literal();
+    }
+  }
+  std::printf("  %dD cluster x%d: %d problems; minimisation %d positions, all %d among the wrapper's %d\n", D, D + 1, built,
+              by_minimisation, shared, by_wrapper);
+  EXPECT_GE(by_wrapper, by_minimisation);
+}
+
+TEST(BallWrapperSolver, FindsEveryPositionOfTheMinimisation2D) { minimisation_round<2>(60, 7200); }
+TEST(BallWrapperSolver, FindsEveryPositionOfTheMinimisation3D) { minimisation_round<3>(40, 8200); }
+
+// ========================================================= 4. spheres, and nothing to find
+
+template <int D>
+void sphere_round(int trials, std::uint64_t seed) {
+  NarrowPhase<D> np;
+  const BallWrapperSolver<D> wrapper;
+  const SphereContactSolver<D> analytic;
+  Rng rng(seed);
+  int compared = 0;
+  for (int trial = 0; trial < trials; ++trial) {
+    Problem<D> pb;
+    std::array<Kind, D> kinds;
+    kinds.fill(Kind::Sphere);
+    if (trial % 3 == 0) kinds[0] = Kind::Plane;
+    if (!construct_problem<D>(pb, np, Kind::Sphere, kinds, Sizes{}, rng)) continue;
+    Out<D> w, a;
+    const int nw = wrapper.solve(pb.span(), pb.mobile(), w);
+    const int na = analytic.solve(pb.span(), pb.mobile(), std::span<Placement<D>>(a.data(), ContactSolver<D>::kMaxSolutions));
+    ASSERT_EQ(nw, na) << "trial " << trial << pb.literal();
+    for (int k = 0; k < na; ++k)
+      EXPECT_LE(closest<D>(first<D>(w, nw), a[k].position).second, 1e-9 * pb.mobile_shape->bounding_radius());
+    ++compared;
+  }
+  EXPECT_GE(compared, trials * 9 / 10);
+}
+
+TEST(BallWrapperSolver, SpheresGiveTheAnalyticPositions2D) { sphere_round<2>(100, 7300); }
+TEST(BallWrapperSolver, SpheresGiveTheAnalyticPositions3D) { sphere_round<3>(100, 8300); }
+
+template <int D>
+void far_apart() {
+  NarrowPhase<D> np;
+  const BallWrapperSolver<D> solver;
+  Rng rng(D);
+  Problem<D> pb;
+  std::array<Kind, D> kinds;
+  kinds.fill(Kind::Cluster);
+  ASSERT_TRUE(construct_problem<D>(pb, np, Kind::Cluster, kinds, Sizes{}, rng));
+  // Move the last body far away: no position can touch all.
+  Particle<D> p = *pb.fixed[D - 1].shaped;
+  p.pose.position += Vec<D>::Constant(100.0);
+  pb.set_particle(D - 1, p);
+  Out<D> out;
+  EXPECT_EQ(solver.solve(pb.span(), pb.mobile(), out), 0);
+}
+
+TEST(BallWrapperSolver, FarApartGivesNothing2D) { far_apart<2>(); }
+TEST(BallWrapperSolver, FarApartGivesNothing3D) { far_apart<3>(); }
+
+// ====================================================================== 5. extremes
+
+TEST(BallWrapperSolver, SizeRatioOneToHundred) {
+  Sizes tiny;
+  tiny.mobile = 0.01;
+  tiny.allow_fixed_overlap = true;  // a tiny mobile cannot touch three big clusters that do not overlap
+  using K = Kind;
+  Tally t = run_constructed<3>("small cluster | cluster x3", K::Cluster, {K::Cluster, K::Cluster, K::Cluster}, 40, 8400, tiny);
+  EXPECT_EQ(t.known_found, t.built);
+  Sizes big;
+  big.fixed = {0.01, 0.01, 0.01};
+  t = run_constructed<3>("big cluster | small cluster x3", K::Cluster, {K::Cluster, K::Cluster, K::Cluster}, 40, 8401, big);
+  EXPECT_EQ(t.known_found, t.built);
+  t = run_constructed<2>("small cluster | cluster x2", K::Cluster, {K::Cluster, K::Cluster}, 40, 7400, tiny);
+  EXPECT_EQ(t.known_found, t.built);
+}
+
+template <int D>
+void offset_round(std::uint64_t seed) {
+  NarrowPhase<D> np;
+  const BallWrapperSolver<D> solver;
+  Rng rng(seed);
+  int compared = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    Problem<D> pb;
+    std::array<Kind, D> kinds;
+    kinds.fill(Kind::Cluster);
+    kinds[0] = Kind::Plane;
+    if (!construct_problem<D>(pb, np, Kind::Cluster, kinds, Sizes{}, rng)) continue;
+    const Vec<D> shift = Vec<D>::Constant(1e6);
+    const Problem<D> far = pb.translated(shift);
+    Out<D> a, b;
+    const int na = solver.solve(pb.span(), pb.mobile(), a);
+    const int nb = solver.solve(far.span(), far.mobile(), b);
+    EXPECT_TRUE(check_placements<D>(far, first<D>(b, nb), kTol)) << "trial " << trial;
+    ASSERT_EQ(na, nb) << "trial " << trial << far.literal();
+    for (int k = 0; k < na; ++k)  // the same positions, moved: to the spacing of doubles at 1e6
+      EXPECT_LE(closest<D>(first<D>(b, nb), a[k].position + shift).second, 1e-9 * pb.mobile_shape->bounding_radius() + 1e-9);
+    ++compared;
+  }
+  EXPECT_GE(compared, 27);
+}
+
+TEST(BallWrapperSolver, CoordinatesOffsetByAMillion2D) { offset_round<2>(7500); }
+TEST(BallWrapperSolver, CoordinatesOffsetByAMillion3D) { offset_round<3>(8500); }
+
+}  // namespace
+}  // namespace fp::general_test
