@@ -29,6 +29,11 @@ class ClusterShape final : public Shape<D> {
   Vec<D> support(const Vec<D>& u) const override;
   bool contains(const Vec<D>& x) const override;
   std::vector<Ball<D>> hull_balls() const override { return members_; }
+  std::vector<RoundedCore<D>> rounded_cores() const override {
+    std::vector<RoundedCore<D>> cores;
+    for (const Ball<D>& b : members_) cores.push_back({{b.center}, b.radius});
+    return cores;
+  }
   /// 2D: the union's outline (exposed arcs only); 3D: every member sphere (overlapping meshes).
   SurfaceMesh<D> surface(int resolution) const override;
   std::vector<FclPart<D>> fcl_parts() const override;

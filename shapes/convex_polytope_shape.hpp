@@ -35,6 +35,7 @@ class ConvexPolytopeShape final : public Shape<D> {
   Vec<D> support(const Vec<D>& u) const override;
   bool contains(const Vec<D>& x) const override;
   std::vector<Ball<D>> hull_balls() const override;
+  std::vector<RoundedCore<D>> rounded_cores() const override { return {{vertices_, 0.0}}; }
   SurfaceMesh<D> surface(int resolution) const override;
   std::vector<FclPart<D>> fcl_parts() const override;
   ShapePtr<D> scaled(double s) const override;

@@ -30,6 +30,14 @@ struct Ball {
   double radius = 0.0;
 };
 
+/// A convex core thickened by a radius: the points' convex hull plus a ball of `radius` (a ball:
+/// one point; a spherocylinder: its axis segment; a convex polytope: its vertices and radius 0).
+template <int D>
+struct RoundedCore {
+  std::vector<Vec<D>> points;
+  double radius = 0.0;
+};
+
 /// A closed surface for display: triangles in 3D, the outline's segments in 2D (body frame).
 template <int D>
 struct SurfaceMesh {
@@ -69,6 +77,12 @@ class Shape {
   /// that makes containment in convex containers and wall gaps exact for balls, capsules,
   /// clusters and polytopes.
   virtual std::vector<Ball<D>> hull_balls() const = 0;
+  /// The shape as a union of rounded convex cores (body frame): what the wrapper contact solvers
+  /// need (contact/ball_wrapper_solver.hpp, contact/polygon_wrapper_solver.hpp). A ball, a
+  /// spherocylinder and a convex polytope are one core; a cluster is one per member. Empty (the
+  /// default) for a shape that is no such union (ellipsoids, cylinders): it is placed by
+  /// minimisation.
+  virtual std::vector<RoundedCore<D>> rounded_cores() const { return {}; }
   /// Closed surface for display; `resolution` = segments per full turn of curved parts.
   virtual SurfaceMesh<D> surface(int resolution) const = 0;
   /// The convex pieces for FCL (built on each call: cache the result).
