@@ -32,35 +32,12 @@ std::span<const Placement<D>> first(const Out<D>& out, int n) {
 
 // ================================================================ 1. touching and overlap-free
 
-struct Tally {
-  int built = 0, with_solution = 0, solutions = 0, known_found = 0;
-  double worst = 0;
-};
-
 template <int D>
 Tally run_constructed(const char* name, Kind mobile, const std::array<Kind, D>& fixed, int trials, std::uint64_t seed,
                       const Sizes& sizes = Sizes{}) {
-  NarrowPhase<D> np;
   const BallWrapperSolver<D> solver;
-  Rng rng(seed);
-  Tally t;
-  for (int trial = 0; trial < trials; ++trial) {
-    Problem<D> pb;
-    if (!construct_problem<D>(pb, np, mobile, fixed, sizes, rng)) continue;
-    ++t.built;
-    Out<D> out;
-    const int n = solver.solve(pb.span(), pb.mobile(), out);
-    CheckResult cr;
-    EXPECT_TRUE(check_placements<D>(pb, first<D>(out, n), kTol, &cr)) << name << " trial " << trial;
-    t.worst = std::max(t.worst, cr.worst);
-    t.solutions += n;
-    t.with_solution += n > 0;
-    const auto [k, dist] = closest<D>(first<D>(out, n), pb.known);
-    t.known_found += k >= 0 && dist <= 1e-7 * pb.mobile_shape->bounding_radius();
-  }
-  std::printf("  %dD %-36s %3d problems, %3d solved, %4d positions, known found %5.1f %%, worst |gap|/tol %.2g\n", D, name,
-              t.built, t.with_solution, t.solutions, 100.0 * t.known_found / std::max(1, t.built), t.worst);
-  EXPECT_GE(t.built, trials * 9 / 10) << name << ": the construction failed too often";
+  const Tally t = run_constructed_with<D>(solver, name, mobile, fixed, trials, seed, kTol, 1e-7, sizes);
+  print_tally<D>(name, t);
   return t;
 }
 

@@ -1073,4 +1073,192 @@ std::pair<int, double> closest(std::span<const Placement<D>> out, const Vec<D>& 
   return {best, bd};
 }
 
+// ======================================================================= 2D brute force
+
+/// The boundary of W = P (+) (-M): the positions of the mobile M's reference point where M
+/// touches the convex fixed particle P. Its point with outward normal u is s_P(u) - s_M(-u) (own
+/// long-double supports), so a dense set of angles traces it exactly (chords within 3e-7 R).
+struct Contour {
+  std::vector<Vec2> v;  ///< counter-clockwise
+  Vec2 c;               ///< an interior point
+  std::vector<double> angle;
+  int start = 0;  ///< index of the vertex with the least angle about c
+
+  /// Signed distance-like value: > 0 inside (the mobile overlaps P), < 0 outside.
+  double inside(const Vec2& x) const {
+    const int n = static_cast<int>(v.size());
+    const double a = std::atan2(x.y() - c.y(), x.x() - c.x());
+    // Binary search over the angles, rotated to start at `start`.
+    int lo = 0, hi = n;
+    while (hi - lo > 1) {
+      const int mid = (lo + hi) / 2;
+      (angle[(start + mid) % n] <= a ? lo : hi) = mid;
+    }
+    int k = (start + lo) % n;
+    if (a < angle[start]) k = (start + n - 1) % n;
+    const Vec2 p = v[k], q = v[(k + 1) % n];
+    const Vec2 e = q - p;
+    return (e.x() * (x.y() - p.y()) - e.y() * (x.x() - p.x())) / e.norm();
+  }
+};
+
+inline Contour contour_of(const Piece<2>& P, const Piece<2>& M, int samples) {
+  Contour c;
+  std::vector<Vec2> raw;
+  for (int k = 0; k < samples; ++k) {
+    const LD t = 2 * kPiL * k / samples;
+    const VL<2> u(std::cos(t), std::sin(t));
+    const VL<2> w = support<2>(P, u) - support<2>(M, VL<2>(-u));
+    const Vec2 x(static_cast<double>(w[0]), static_cast<double>(w[1]));
+    if (raw.empty() || (x - raw.back()).norm() > 1e-12) raw.push_back(x);
+  }
+  while (raw.size() > 1 && (raw.front() - raw.back()).norm() <= 1e-12) raw.pop_back();
+  // Split long chords (flat sides) so that a contour crossing twice within one side is seen.
+  double perimeter = 0;
+  for (std::size_t k = 0; k < raw.size(); ++k) perimeter += (raw[(k + 1) % raw.size()] - raw[k]).norm();
+  const double step = perimeter / samples;
+  for (std::size_t k = 0; k < raw.size(); ++k) {
+    const Vec2 p = raw[k], q = raw[(k + 1) % raw.size()];
+    const int pieces = std::max(1, static_cast<int>(std::ceil((q - p).norm() / step)));
+    for (int j = 0; j < pieces; ++j) c.v.push_back(p + (q - p) * (double(j) / pieces));
+  }
+  c.c = Vec2::Zero();
+  for (const Vec2& x : c.v) c.c += x / static_cast<double>(c.v.size());
+  for (const Vec2& x : c.v) c.angle.push_back(std::atan2(x.y() - c.c.y(), x.x() - c.c.x()));
+  c.start = static_cast<int>(std::min_element(c.angle.begin(), c.angle.end()) - c.angle.begin());
+  return c;
+}
+
+/// The common zeros of ω1 and ω2: where contour 1 enters or leaves W2 (sign changes of the
+/// inside value along contour 1, located by bisection on the chord).
+inline std::vector<Vec2> crossings(const Contour& c1, const Contour& c2, double& least_angle_deg) {
+  std::vector<Vec2> out;
+  least_angle_deg = 180;
+  const int n = static_cast<int>(c1.v.size());
+  double prev = c2.inside(c1.v[0]);
+  for (int k = 1; k <= n; ++k) {
+    const Vec2 p = c1.v[k - 1], q = c1.v[k % n];
+    const double cur = c2.inside(q);
+    if ((prev > 0) != (cur > 0)) {
+      double lo = 0, hi = 1;
+      const bool lo_inside = prev > 0;
+      for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        ((c2.inside(p + mid * (q - p)) > 0) == lo_inside ? lo : hi) = mid;
+      }
+      const Vec2 x = p + 0.5 * (lo + hi) * (q - p);
+      out.push_back(x);
+      // Crossing angle: contour 1's chord against contour 2's tangent there (finite difference
+      // of the inside value across the chord, relative to the chord length).
+      const double slope = std::abs(cur - prev) / (q - p).norm();  // = |sin(angle)|
+      least_angle_deg = std::min(least_angle_deg, std::asin(std::min(1.0, slope)) * 180 / kPi);
+    }
+    prev = cur;
+  }
+  return out;
+}
+
+/// A 2D problem of two fixed convex particles of the given kinds at a random gap (0 to 1.5 mobile
+/// diameters, as neighbours on a front are) and a mobile of the given kind. False if the
+/// construction failed.
+inline bool gapped_pair_problem(Problem<2>& pb, const NarrowPhase<2>& np, Kind fixed1, Kind fixed2, Kind mobile, Rng& rng) {
+  pb = Problem<2>();
+  Particle<2> p1, p2;
+  p1.shape = random_shape<2>(fixed1, log_uniform(rng, 0.7, 1.4), rng);
+  p1.pose.rotation = random_rotation<2>(rng);
+  p2.shape = random_shape<2>(fixed2, log_uniform(rng, 0.7, 1.4), rng);
+  p2.pose.rotation = random_rotation<2>(rng);
+  pb.mobile_shape = random_shape<2>(mobile, log_uniform(rng, 0.5, 1.5), rng);
+  pb.mobile_rotation = random_rotation<2>(rng);
+  const double target = rng.uniform(0, 1.5) * 2 * pb.mobile_shape->bounding_radius();
+  const Vec2 d = random_unit<2>(rng);
+  auto f = [&](double t) {
+    p2.pose.position = t * d;
+    return np.gap(p1, p2).value - target;
+  };
+  const double far = 2 * (p1.bounding_radius() + p2.bounding_radius()) + target;
+  if (!(f(0) < 0) || !(f(far) > 0)) return false;
+  p2.pose.position = bisect_zero(f, 0, far) * d;
+  pb.set_particle(0, p1);
+  pb.set_particle(1, p2);
+  return true;
+}
+
+/// Every position of the (convex) mobile touching both (convex) fixed particles of `pb`: the
+/// crossings of the two touching contours; `least_angle_deg` is the least crossing angle.
+inline std::vector<Vec2> brute_force_crossings(const Problem<2>& pb, double& least_angle_deg) {
+  const Piece<2> M = ref_of<2>(pb.mobile_at(Vec2::Zero())).pieces[0];
+  const Contour c1 = contour_of(ref_of<2>(pb.particles[0]).pieces[0], M, 4096);
+  const Contour c2 = contour_of(ref_of<2>(pb.particles[1]).pieces[0], M, 4096);
+  return crossings(c1, c2, least_angle_deg);
+}
+
+/// Counters of a batch of constructed problems.
+struct Tally {
+  int built = 0;          ///< problems constructed
+  int with_solution = 0;  ///< problems with at least one position returned
+  int solutions = 0;      ///< positions returned (every one checked)
+  int known_found = 0;    ///< problems whose constructed position was among them
+  int known_on_stretch = 0;  ///< ... or between two of them on a straight stretch of positions
+                             ///< (a flat side sliding on a flat side: a continuum of solutions)
+  int known_inexact = 0;     ///< ... or not found, but the constructed position is no solution at
+                             ///< the tolerance (its construction by bisection is accurate to about
+                             ///< 1e-10 of the mobile: beyond `tol` of a body 100 times smaller)
+  double worst = 0;       ///< largest |independent gap| / tolerance (<= 1)
+  double known_recall() const { return built ? double(known_found) / built : 0; }
+  double solved() const { return built ? double(with_solution) / built : 0; }
+};
+
+/// Builds `trials` problems whose bodies of the given kinds touch the mobile at a known position,
+/// solves each with `solver` and checks every returned position independently: |gap| <= `tol` x
+/// the smaller size. The known position counts as found within `known_within` x the mobile's size.
+template <int D>
+Tally run_constructed_with(const ContactSolver<D>& solver, const char* name, Kind mobile, const std::array<Kind, D>& fixed,
+                           int trials, std::uint64_t seed, double tol, double known_within, const Sizes& sizes = Sizes{}) {
+  NarrowPhase<D> np;
+  Rng rng(seed);
+  Tally t;
+  for (int trial = 0; trial < trials; ++trial) {
+    Problem<D> pb;
+    if (!construct_problem<D>(pb, np, mobile, fixed, sizes, rng)) continue;
+    ++t.built;
+    std::array<Placement<D>, ContactSolver<D>::kMaxCandidates> out;
+    const int n = solver.solve(pb.span(), pb.mobile(), out);
+    const std::span<const Placement<D>> got(out.data(), static_cast<std::size_t>(n));
+    CheckResult cr;
+    EXPECT_TRUE(check_placements<D>(pb, got, tol, &cr)) << name << " trial " << trial;
+    t.worst = std::max(t.worst, cr.worst);
+    t.solutions += n;
+    t.with_solution += n > 0;
+    const double within = known_within * pb.mobile_shape->bounding_radius();
+    const auto [k, dist] = closest<D>(got, pb.known);
+    if (k >= 0 && dist <= within) {
+      ++t.known_found;
+      continue;
+    }
+    bool on_stretch = false;
+    for (int a = 0; a < n && !on_stretch; ++a)
+      for (int b = a + 1; b < n && !on_stretch; ++b) {
+        const Vec<D> p = got[a].position, d = got[b].position - p;
+        const double s = std::clamp((pb.known - p).dot(d) / d.squaredNorm(), 0.0, 1.0);
+        on_stretch = (p + s * d - pb.known).norm() <= within;
+      }
+    t.known_on_stretch += on_stretch;
+    if (!on_stretch) {
+      const Placement<D> known{pb.known};
+      t.known_inexact += !check_placements<D>(pb, std::span<const Placement<D>>(&known, 1), tol);
+    }
+  }
+  EXPECT_GE(t.built, trials * 9 / 10) << name << ": the construction failed too often";
+  return t;
+}
+
+/// One line of the printed table of run_constructed_with.
+template <int D>
+void print_tally(const char* name, const Tally& t) {
+  std::printf("  %dD %-36s %3d problems, %3d solved, %4d positions, known found %5.1f %% (+%d on a stretch, %d inexact), "
+              "worst |gap|/tol %.2g\n",
+              D, name, t.built, t.with_solution, t.solutions, 100 * t.known_recall(), t.known_on_stretch, t.known_inexact, t.worst);
+}
+
 }  // namespace fp::general_test
