@@ -4,15 +4,26 @@
 
 #include "contact/ball_wrapper_solver.hpp"
 #include "contact/minimisation_solver.hpp"
+#include "contact/polygon_wrapper_solver.hpp"
 #include "contact/sphere_contact_solver.hpp"
 #include "shapes/cluster_shape.hpp"
+#include "shapes/convex_polytope_shape.hpp"
 #include "shapes/sphere_shape.hpp"
+#include "shapes/spherocylinder_shape.hpp"
 
 namespace fp {
 
 template <int D>
 SolverRegistry<D>::SolverRegistry(const NarrowPhase<D>& narrow_phase, const MinimisationOptions& options)
     : default_(std::make_shared<MinimisationSolver<D>>(narrow_phase, options)) {
+  if constexpr (D == 2) {  // rounded convex cores: disks, stadiums, polygons, clusters
+    const char* cores[] = {SphereShape<2>::kKind, SpherocylinderShape<2>::kKind, ConvexPolytopeShape<2>::kKind, ClusterShape<2>::kKind};
+    auto wrapper = std::make_shared<PolygonWrapperSolver>();
+    for (const char* mobile : cores) {
+      add_pair("wall", mobile, wrapper);
+      for (const char* fixed : cores) add_pair(fixed, mobile, wrapper);
+    }
+  }
   const char* balls[] = {SphereShape<D>::kKind, ClusterShape<D>::kKind};
   auto wrapper = std::make_shared<BallWrapperSolver<D>>();
   for (const char* mobile : balls) {

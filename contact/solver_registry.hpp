@@ -2,10 +2,11 @@
 // Which contact solver places a mobile particle against given fixed bodies. Solvers are
 // registered for shape-kind pairs (fixed kind, mobile kind); walls are the kind "wall".
 // Minimisation is the default for every pair. A problem goes to the most recently registered
-// solver that is registered for EVERY (fixed, mobile) pair of the problem, else to the default:
-// the ball wrapper covers spheres, clusters and walls, and the analytic sphere solver, registered
-// after it, takes the problems of spheres and walls alone; a sphere placed against two spheres and
-// a capsule still goes to minimisation.
+// solver that is registered for EVERY (fixed, mobile) pair of the problem, else to the default.
+// In 2D the polygon wrapper covers disks, stadiums, polygons, clusters and walls; the ball
+// wrapper, registered after it, takes spheres (disks) and clusters with walls; the analytic
+// sphere solver, registered last, takes spheres and walls alone. A 3D sphere placed against two
+// spheres and a capsule still goes to minimisation.
 #include <map>
 #include <memory>
 #include <span>
@@ -22,8 +23,9 @@ namespace fp {
 template <int D>
 class SolverRegistry {
  public:
-  /// The default registry: minimisation everywhere; the ball wrapper for spheres, clusters and
-  /// walls; the analytic sphere solver for spheres and walls.
+  /// The default registry: minimisation everywhere; in 2D the polygon wrapper for rounded convex
+  /// cores; the ball wrapper for spheres, clusters and walls; the analytic sphere solver for
+  /// spheres and walls.
   SolverRegistry(const NarrowPhase<D>& narrow_phase, const MinimisationOptions& options);
 
   void set_default(std::shared_ptr<const ContactSolver<D>> solver) { default_ = std::move(solver); }

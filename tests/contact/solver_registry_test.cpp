@@ -7,6 +7,7 @@
 #include <atomic>
 
 #include "contact/ball_wrapper_solver.hpp"
+#include "contact/polygon_wrapper_solver.hpp"
 #include "contact/solver_registry.hpp"
 #include "contact/sphere_contact_solver.hpp"
 #include "general_contact_support.hpp"
@@ -22,6 +23,7 @@ template <int D>
 bool is_ball_wrapper(const ContactSolver<D>& s) {
   return dynamic_cast<const BallWrapperSolver<D>*>(&s) != nullptr;
 }
+bool is_polygon_wrapper(const ContactSolver<2>& s) { return dynamic_cast<const PolygonWrapperSolver*>(&s) != nullptr; }
 template <int D>
 bool is_minimisation(const ContactSolver<D>& s) {
   return dynamic_cast<const MinimisationSolver<D>*>(&s) != nullptr;
@@ -51,16 +53,16 @@ void picks_round() {
   const SolverRegistry<D> reg(np, MinimisationOptions{});
   ASSERT_TRUE(is_minimisation<D>(reg.default_solver()));
   const auto sphere = std::make_shared<SphereShape<D>>(1.0);
-  const auto capsule = std::make_shared<SpherocylinderShape<D>>(0.5, 0.5);
+  const auto ellipsoid = std::make_shared<EllipsoidShape<D>>(Vec<D>::Constant(0.5));  // no wrapper reaches it
   const Mobile<D> sphere_mobile = Mobile<D>::of_shape(sphere, Mat<D>::Identity());
-  const Mobile<D> capsule_mobile = Mobile<D>::of_shape(capsule, Mat<D>::Identity());
+  const Mobile<D> ellipsoid_mobile = Mobile<D>::of_shape(ellipsoid, Mat<D>::Identity());
 
-  std::array<Particle<D>, D> spheres, capsules;
+  std::array<Particle<D>, D> spheres, ellipsoids;
   for (int i = 0; i < D; ++i) {
     Vec<D> x = Vec<D>::Zero();
     x[i % D] = 2.0 * (i + 1);
     spheres[i] = particle<D>(sphere, x);
-    capsules[i] = particle<D>(capsule, x);
+    ellipsoids[i] = particle<D>(ellipsoid, x);
   }
   std::array<Body<D>, D> f;
 
@@ -70,21 +72,21 @@ void picks_round() {
   for (int i = 0; i < D; ++i) f[i] = Body<D>::sphere(spheres[i].pose.position, 1.0, i);
   EXPECT_TRUE(is_analytic<D>(reg.pick(f, sphere_mobile)));
 
-  // A capsule anywhere: minimisation (mobile, one fixed body, all fixed bodies).
-  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, capsule_mobile)));
-  f[D - 1] = Body<D>::of_particle(capsules[D - 1], D - 1);
+  // An ellipsoid anywhere: minimisation (mobile, one fixed body, all fixed bodies).
+  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, ellipsoid_mobile)));
+  f[D - 1] = Body<D>::of_particle(ellipsoids[D - 1], D - 1);
   EXPECT_TRUE(is_minimisation<D>(reg.pick(f, sphere_mobile)));
-  for (int i = 0; i < D; ++i) f[i] = Body<D>::of_particle(capsules[i], i);
+  for (int i = 0; i < D; ++i) f[i] = Body<D>::of_particle(ellipsoids[i], i);
   EXPECT_TRUE(is_minimisation<D>(reg.pick(f, sphere_mobile)));
-  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, capsule_mobile)));
+  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, ellipsoid_mobile)));
 
-  // A wall and spheres: analytic; a wall and a capsule mobile: minimisation.
+  // A wall and spheres: analytic; a wall and an ellipsoid mobile: minimisation.
   const Wall<D> wall = Wall<D>::plane(Vec<D>::Zero(), Vec<D>::UnitX());
   for (int i = 0; i < D; ++i) f[i] = Body<D>::of_particle(spheres[i], i);
   f[0] = Body<D>::of_wall(wall);
   EXPECT_TRUE(is_analytic<D>(reg.pick(f, sphere_mobile)));
-  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, capsule_mobile)));
-  f[D - 1] = Body<D>::of_particle(capsules[D - 1], D - 1);
+  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, ellipsoid_mobile)));
+  f[D - 1] = Body<D>::of_particle(ellipsoids[D - 1], D - 1);
   EXPECT_TRUE(is_minimisation<D>(reg.pick(f, sphere_mobile)));
 
   // A plain sphere mobile (radius only, the sphere fast path's form) against spheres: the
@@ -92,7 +94,7 @@ void picks_round() {
   for (int i = 0; i < D; ++i) f[i] = Body<D>::sphere(spheres[i].pose.position, 1.0, i);
   EXPECT_TRUE(is_analytic<D>(reg.pick(f, plain_sphere<D>(1.0))));
 
-  // Clusters with spheres and walls: the ball wrapper, mobile or fixed; with a capsule: minimisation.
+  // Clusters with spheres and walls: the ball wrapper, mobile or fixed; with an ellipsoid: minimisation.
   std::vector<Ball<D>> members(2);
   members[1].center[0] = 1.0;
   members[0].radius = members[1].radius = 0.6;
@@ -107,12 +109,31 @@ void picks_round() {
   f[D - 1] = Body<D>::of_particle(clusters[D - 1], D - 1);
   EXPECT_TRUE(is_ball_wrapper<D>(reg.pick(f, sphere_mobile)));
   EXPECT_TRUE(is_ball_wrapper<D>(reg.pick(f, plain_sphere<D>(1.0))));
-  f[D - 1] = Body<D>::of_particle(capsules[D - 1], D - 1);
+  f[D - 1] = Body<D>::of_particle(ellipsoids[D - 1], D - 1);
   EXPECT_TRUE(is_minimisation<D>(reg.pick(f, cluster_mobile)));
   EXPECT_TRUE(is_minimisation<D>(reg.pick(f, sphere_mobile)));
 }
 
 TEST(SolverRegistry, Picks2D) { picks_round<2>(); }
+
+// 2D stadiums and polygons, with disks, clusters and walls: the polygon wrapper; with an ellipse
+// (no rounded cores): minimisation.
+TEST(SolverRegistry, PicksThePolygonWrapperIn2D) {
+  NarrowPhase<2> np;
+  const SolverRegistry<2> reg(np, MinimisationOptions{});
+  const auto capsule = std::make_shared<SpherocylinderShape<2>>(0.5, 0.5);
+  const auto disk = std::make_shared<SphereShape<2>>(1.0);
+  const auto ellipse = std::make_shared<EllipsoidShape<2>>(Vec2(1.0, 0.5));
+  const Particle<2> c = particle<2>(capsule, Vec2(2, 0)), d = particle<2>(disk, Vec2(0, 2)), e = particle<2>(ellipse, Vec2(2, 2));
+  const Wall<2> wall = Wall<2>::plane(Vec2::Zero(), Vec2::UnitX());
+  std::array<Body<2>, 2> f = {Body<2>::of_particle(c, 0), Body<2>::of_particle(d, 1)};
+  EXPECT_TRUE(is_polygon_wrapper(reg.pick(f, Mobile<2>::of_shape(disk, Mat<2>::Identity()))));
+  EXPECT_TRUE(is_polygon_wrapper(reg.pick(f, Mobile<2>::of_shape(capsule, Mat<2>::Identity()))));
+  f[1] = Body<2>::of_wall(wall);
+  EXPECT_TRUE(is_polygon_wrapper(reg.pick(f, Mobile<2>::of_shape(capsule, Mat<2>::Identity()))));
+  f[1] = Body<2>::of_particle(e, 2);
+  EXPECT_TRUE(is_minimisation<2>(reg.pick(f, Mobile<2>::of_shape(capsule, Mat<2>::Identity()))));
+}
 TEST(SolverRegistry, Picks3D) { picks_round<3>(); }
 
 template <int D>
@@ -120,30 +141,30 @@ void override_round() {
   NarrowPhase<D> np;
   SolverRegistry<D> reg(np, MinimisationOptions{});
   const auto sphere = std::make_shared<SphereShape<D>>(1.0);
-  const auto capsule = std::make_shared<SpherocylinderShape<D>>(0.5, 0.5);
-  std::array<Particle<D>, D> spheres, capsules;
+  const auto ellipsoid = std::make_shared<EllipsoidShape<D>>(Vec<D>::Constant(0.5));  // no wrapper reaches it
+  std::array<Particle<D>, D> spheres, ellipsoids;
   for (int i = 0; i < D; ++i) {
     Vec<D> x = Vec<D>::Zero();
     x[i % D] = 2.0 * (i + 1);
     spheres[i] = particle<D>(sphere, x);
-    capsules[i] = particle<D>(capsule, x);
+    ellipsoids[i] = particle<D>(ellipsoid, x);
   }
-  const Mobile<D> capsule_mobile = Mobile<D>::of_shape(capsule, Mat<D>::Identity());
+  const Mobile<D> ellipsoid_mobile = Mobile<D>::of_shape(ellipsoid, Mat<D>::Identity());
   const Mobile<D> sphere_mobile = Mobile<D>::of_shape(sphere, Mat<D>::Identity());
   std::array<Body<D>, D> f;
-  for (int i = 0; i < D; ++i) f[i] = Body<D>::of_particle(capsules[i], i);
+  for (int i = 0; i < D; ++i) f[i] = Body<D>::of_particle(ellipsoids[i], i);
 
-  // Capsule against capsules registered: used for all-capsule problems only.
+  // Capsule against ellipsoids registered: used for all-ellipsoid problems only.
   auto counting = std::make_shared<CountingSolver<D>>();
-  reg.add_pair("spherocylinder", "spherocylinder", counting);
-  EXPECT_EQ(&reg.pick(f, capsule_mobile), counting.get());
+  reg.add_pair(EllipsoidShape<D>::kKind, EllipsoidShape<D>::kKind, counting);
+  EXPECT_EQ(&reg.pick(f, ellipsoid_mobile), counting.get());
   std::array<Placement<D>, ContactSolver<D>::kMaxSolutions> out;
-  reg.pick(f, capsule_mobile).solve(f, capsule_mobile, out);
+  reg.pick(f, ellipsoid_mobile).solve(f, ellipsoid_mobile, out);
   EXPECT_EQ(counting->calls, 1);
   f[0] = Body<D>::of_particle(spheres[0], 0);
-  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, capsule_mobile)));  // sphere-capsule has no override
-  reg.add_pair("sphere", "spherocylinder", counting);            // now every pair has the same one
-  EXPECT_EQ(&reg.pick(f, capsule_mobile), counting.get());
+  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, ellipsoid_mobile)));  // sphere-ellipsoid has no override
+  reg.add_pair("sphere", EllipsoidShape<D>::kKind, counting);            // now every pair has the same one
+  EXPECT_EQ(&reg.pick(f, ellipsoid_mobile), counting.get());
 
   // A later solver for sphere-sphere takes the all-sphere problems; wall + spheres, which it does
   // not cover, stays with the analytic solver (registered for both pairs).
@@ -157,18 +178,18 @@ void override_round() {
   reg.add_pair("wall", "sphere", other);  // now it covers both
   EXPECT_EQ(&reg.pick(f, sphere_mobile), other.get());
 
-  // A new default: what no registered solver covers (a sphere against a capsule).
+  // A new default: what no registered solver covers (a sphere against an ellipsoid).
   auto fallback = std::make_shared<CountingSolver<D>>();
   reg.set_default(fallback);
   EXPECT_EQ(&reg.default_solver(), fallback.get());
-  f[D - 1] = Body<D>::of_particle(capsules[D - 1], D - 1);
+  f[D - 1] = Body<D>::of_particle(ellipsoids[D - 1], D - 1);
   EXPECT_EQ(&reg.pick(f, sphere_mobile), fallback.get());
 }
 
 TEST(SolverRegistry, OverridesAPair2D) { override_round<2>(); }
 TEST(SolverRegistry, OverridesAPair3D) { override_round<3>(); }
 
-/// End to end: the picked solver solves a wall + spheres problem and a capsule problem, and
+/// End to end: the picked solver solves a wall + spheres problem and an ellipsoid problem, and
 /// every position passes the independent check.
 template <int D>
 void solves_round(std::uint64_t seed) {
@@ -180,11 +201,11 @@ void solves_round(std::uint64_t seed) {
     std::array<Kind, D> kinds;
     kinds.fill(Kind::Sphere);
     kinds[0] = Kind::Plane;
-    const bool capsule = t % 2;
+    const bool ellipsoid = t % 2;
     Problem<D> pb;
-    if (!construct_problem<D>(pb, np, capsule ? Kind::Capsule : Kind::Sphere, kinds, Sizes{}, rng)) continue;
+    if (!construct_problem<D>(pb, np, ellipsoid ? Kind::Ellipsoid : Kind::Sphere, kinds, Sizes{}, rng)) continue;
     const ContactSolver<D>& s = reg.pick(pb.span(), pb.mobile());
-    EXPECT_EQ(is_analytic<D>(s), !capsule);
+    EXPECT_EQ(is_analytic<D>(s), !ellipsoid);
     analytic += is_analytic<D>(s);
     minimisation += is_minimisation<D>(s);
     std::array<Placement<D>, ContactSolver<D>::kMaxSolutions> out;

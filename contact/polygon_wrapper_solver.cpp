@@ -1,0 +1,335 @@
+#include "contact/polygon_wrapper_solver.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace fp {
+namespace {
+
+using V = Vec2;
+
+double cross(const V& a, const V& b) { return a.x() * b.y() - a.y() * b.x(); }
+/// Outward unit normal of the edge along d of a counter-clockwise polygon.
+V outward(const V& d) { return V(d.y(), -d.x()).normalized(); }
+
+/// Counter-clockwise convex hull (Andrew's monotone chain) without collinear points: 1 or 2
+/// points when the points span no area.
+std::vector<V> hull(std::vector<V> p) {
+  std::sort(p.begin(), p.end(), [](const V& a, const V& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  if (p.size() <= 2) return p;
+  std::vector<V> h(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(h[k - 1] - h[k - 2], p[i] - h[k - 2]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(h[k - 1] - h[k - 2], p[i] - h[k - 2]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  h.resize(k - 1);
+  return h;
+}
+
+/// Signed distance from x to the convex hull q (counter-clockwise; 1 or 2 points allowed).
+double signed_distance(const std::vector<V>& q, const V& x) {
+  const auto to_segment = [&](const V& a, const V& b) {
+    const V d = b - a;
+    const double t = std::clamp((x - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    return (x - a - t * d).norm();
+  };
+  if (q.size() == 1) return (x - q[0]).norm();
+  if (q.size() == 2) return to_segment(q[0], q[1]);
+  double inside = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const V& a = q[i];
+    const V& b = q[(i + 1) % q.size()];
+    inside = std::max(inside, outward(b - a).dot(x - a));
+  }
+  if (inside <= 0) return inside;
+  double d = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < q.size(); ++i) d = std::min(d, to_segment(q[i], q[(i + 1) % q.size()]));
+  return d;
+}
+
+/// A wrapper (locus of the mobile's reference point), in the frame centred on s0.
+struct Locus {
+  enum Kind { Rounded, Line, Circle } kind = Rounded;
+  std::vector<V> q;       ///< Rounded: Minkowski core, counter-clockwise
+  double rho = 0;         ///< Rounded: thickening; Circle: radius
+  V n = V::Zero();        ///< Line: unit normal, gap = n.x - h
+  double h = 0;
+  V c = V::Zero();        ///< Circle: centre, gap = rho - |x - c| (the mobile inside)
+  V centre = V::Zero();   ///< bounding circle (Rounded, Circle)
+  double reach = 0;
+  double size = 1;        ///< tolerance size
+
+  double gap(const V& x) const {
+    switch (kind) {
+      case Rounded: return signed_distance(q, x) - rho;
+      case Line: return n.dot(x) - h;
+      case Circle: return rho - (x - c).norm();
+    }
+    return 0;
+  }
+};
+
+/// A piece of a wrapper's boundary: a segment [a, b], a line through a along unit b, or an arc of
+/// centre c and radius r from direction n0 to n1 counter-clockwise (a full circle if `full`).
+struct Prim {
+  enum Kind { Seg, Line, Arc } kind = Seg;
+  V a = V::Zero(), b = V::Zero(), c = V::Zero(), n0 = V::Zero(), n1 = V::Zero();
+  double r = 0;
+  bool full = false;
+};
+
+void add_prims(const Locus& L, std::vector<Prim>& out) {
+  if (L.kind == Locus::Line) {
+    Prim p;
+    p.kind = Prim::Line, p.a = L.h * L.n, p.b = V(-L.n.y(), L.n.x());
+    out.push_back(p);
+    return;
+  }
+  if (L.kind == Locus::Circle || L.q.size() == 1) {
+    if (!(L.rho > 0)) return;  // a point: no curve
+    Prim p;
+    p.kind = Prim::Arc, p.c = L.kind == Locus::Circle ? L.c : L.q[0], p.r = L.rho, p.full = true;
+    out.push_back(p);
+    return;
+  }
+  const std::size_t m = L.q.size();
+  std::vector<V> normal(m);
+  for (std::size_t i = 0; i < m; ++i) normal[i] = outward(L.q[(i + 1) % m] - L.q[i]);
+  for (std::size_t i = 0; i < m; ++i) {
+    Prim s;
+    s.kind = Prim::Seg, s.a = L.q[i] + L.rho * normal[i], s.b = L.q[(i + 1) % m] + L.rho * normal[i];
+    out.push_back(s);
+    if (L.rho > 0) {
+      Prim a;
+      a.kind = Prim::Arc, a.c = L.q[i], a.r = L.rho, a.n0 = normal[(i + m - 1) % m], a.n1 = normal[i];
+      out.push_back(a);
+    }
+  }
+}
+
+constexpr double kEps = 1e-12;
+/// Segments whose directions make a sine below this may lie within the tolerance of each other
+/// over a stretch (checked).
+constexpr double kFlushSine = 1e-6;
+
+bool in_arc(const Prim& a, const V& p) {
+  if (a.full) return true;
+  const V u = p - a.c;
+  const double slack = kEps * u.norm();
+  return cross(a.n0, u) >= -slack && cross(u, a.n1) >= -slack;
+}
+
+/// Points of a segment or line (p + t d, t in [0, 1] for a segment) on the circle (c, r).
+void line_circle(const V& p, const V& d, bool segment, const Prim& arc, std::vector<V>& out) {
+  const V f = p - arc.c;
+  const double A = d.squaredNorm(), B = f.dot(d), C = (f.norm() - arc.r) * (f.norm() + arc.r);
+  const double disc = B * B - A * C;
+  if (disc < 0) return;
+  const double s = std::sqrt(disc);
+  for (const double t : {(-B - s) / A, (-B + s) / A}) {
+    if (segment && (t < -kEps || t > 1 + kEps)) continue;
+    const V x = p + t * d;
+    if (in_arc(arc, x)) out.push_back(x);
+    if (s == 0) break;
+  }
+}
+
+/// Intersections of two primitives; two segments (or a segment and a line) closer than `flush`
+/// to each other along a common stretch give its two ends.
+void intersect(const Prim& P, const Prim& Q, double flush, std::vector<V>& out) {
+  if (P.kind == Prim::Arc && Q.kind == Prim::Arc) {
+    const V d = Q.c - P.c;
+    const double dist = d.norm();
+    if (!(dist > 0) || dist > P.r + Q.r || dist < std::abs(P.r - Q.r)) return;
+    const double x = 0.5 * (dist + (P.r - Q.r) * (P.r + Q.r) / dist);
+    const double y2 = (P.r - x) * (P.r + x);
+    const double y = y2 > 0 ? std::sqrt(y2) : 0.0;
+    const V u = d / dist, v(-u.y(), u.x());
+    for (const double sgn : {1.0, -1.0}) {
+      const V p = P.c + x * u + sgn * y * v;
+      if (in_arc(P, p) && in_arc(Q, p)) out.push_back(p);
+      if (y == 0) break;
+    }
+    return;
+  }
+  if (P.kind == Prim::Arc || Q.kind == Prim::Arc) {
+    const Prim& arc = P.kind == Prim::Arc ? P : Q;
+    const Prim& lin = P.kind == Prim::Arc ? Q : P;
+    const bool seg = lin.kind == Prim::Seg;
+    line_circle(lin.a, seg ? V(lin.b - lin.a) : lin.b, seg, arc, out);
+    return;
+  }
+  // Two segments or lines: a + t r = c + u s.
+  const V r = P.kind == Prim::Seg ? V(P.b - P.a) : P.b;
+  const V s = Q.kind == Prim::Seg ? V(Q.b - Q.a) : Q.b;
+  const V w = Q.a - P.a;
+  const double rn = r.norm(), sn = s.norm();
+  const double sine = std::abs(cross(r, s)) / (rn * sn);
+  const bool p_seg = P.kind == Prim::Seg, q_seg = Q.kind == Prim::Seg;
+  if (sine > kEps) {
+    const double denom = cross(r, s);
+    const double t = cross(w, s) / denom, u = cross(w, r) / denom;
+    if ((!p_seg || (t >= -kEps && t <= 1 + kEps)) && (!q_seg || (u >= -kEps && u <= 1 + kEps))) out.push_back(P.a + t * r);
+  }
+  // Nearly parallel and within `flush` of each other along a common stretch (a flat side sliding
+  // along a flat side or a wall: a continuum of positions, within the tolerance): the ends of that
+  // stretch, which the exact intersection (far away, or none) does not give.
+  if (sine > kFlushSine || (!p_seg && !q_seg)) return;
+  const Prim& seg = p_seg ? P : Q;
+  const Prim& other = p_seg ? Q : P;
+  const V d = seg.b - seg.a;
+  double lo = 0, hi = 1;
+  if (other.kind == Prim::Seg) {
+    const double tc = (other.a - seg.a).dot(d) / d.squaredNorm(), td = (other.b - seg.a).dot(d) / d.squaredNorm();
+    lo = std::max(0.0, std::min(tc, td)), hi = std::min(1.0, std::max(tc, td));
+    if (lo > hi) return;
+  }
+  const V od = other.kind == Prim::Seg ? V(other.b - other.a) : other.b;
+  const V normal = V(-od.y(), od.x()).normalized();
+  for (const double t : {lo, hi})
+    if (!(std::abs(normal.dot(seg.a + t * d - other.a)) <= flush)) return;
+  out.push_back(seg.a + lo * d);
+  out.push_back(seg.a + hi * d);
+}
+
+/// The cores of a fixed particle (frame-local) or the mobile (offsets), with their radii.
+std::vector<RoundedCore<2>> cores_of(const Shape<2>* shape, const Mat<2>& rotation, const V& position, double radius) {
+  if (shape == nullptr) return {{{position}, radius}};
+  std::vector<RoundedCore<2>> cores = shape->rounded_cores();
+  for (auto& c : cores)
+    for (V& p : c.points) p = position + rotation * p;
+  return cores;
+}
+
+/// Bounding circle of a rounded locus or circle.
+void bound(Locus& L) {
+  if (L.kind == Locus::Line) return;
+  if (L.kind == Locus::Circle) {
+    L.centre = L.c, L.reach = L.rho;
+    return;
+  }
+  V c = V::Zero();
+  for (const V& p : L.q) c += p;
+  c /= static_cast<double>(L.q.size());
+  double r = 0;
+  for (const V& p : L.q) r = std::max(r, (p - c).norm());
+  L.centre = c, L.reach = r + L.rho;
+}
+
+/// The wrappers of one fixed body for the mobile cores (frame centred on `o`).
+void loci_of(const Body<2>& b, const V& o, const std::vector<RoundedCore<2>>& mobile, double mobile_radius,
+             std::vector<Locus>& out) {
+  out.clear();
+  if (b.is_wall()) {
+    const Wall<2>& w = *b.wall;
+    for (const RoundedCore<2>& M : mobile) {
+      if (w.kind == WallKind::Plane) {
+        Locus L;
+        L.kind = Locus::Line, L.n = w.normal, L.size = mobile_radius;
+        double lowest = std::numeric_limits<double>::infinity();
+        for (const V& p : M.points) lowest = std::min(lowest, w.normal.dot(p));
+        L.h = w.normal.dot(w.point - o) + M.radius - lowest;
+        out.push_back(L);
+      } else if (w.kind == WallKind::Sphere) {
+        for (const V& p : M.points) {
+          Locus L;
+          L.kind = Locus::Circle, L.c = w.point - o - p, L.rho = w.radius - M.radius, L.size = mobile_radius;
+          if (L.rho > 0) bound(L), out.push_back(L);
+        }
+      } else if (w.kind == WallKind::Vertex) {
+        std::vector<V> diff;
+        for (const V& p : M.points) diff.push_back(w.point - o - p);
+        Locus L;
+        L.q = hull(std::move(diff)), L.rho = M.radius, L.size = mobile_radius;
+        bound(L), out.push_back(L);
+      }
+    }
+    return;
+  }
+  const Particle<2>* q = b.shaped;
+  const auto fixed = cores_of(q ? q->shape.get() : nullptr, q ? q->pose.rotation : Mat<2>::Identity(), b.center - o, b.radius);
+  const double size = std::min(b.radius, mobile_radius);
+  std::vector<V> diff;
+  for (const RoundedCore<2>& F : fixed)
+    for (const RoundedCore<2>& M : mobile) {
+      diff.clear();
+      for (const V& f : F.points)
+        for (const V& m : M.points) diff.push_back(f - m);
+      Locus L;
+      L.q = hull(diff), L.rho = F.radius + M.radius, L.size = size;
+      bound(L), out.push_back(L);
+    }
+}
+
+double least_gap(const std::vector<Locus>& loci, const V& x) {
+  double g = std::numeric_limits<double>::infinity();
+  for (const Locus& L : loci) g = std::min(g, L.gap(x));
+  return g;
+}
+
+bool may_meet(const Locus& a, const Locus& b) {
+  if (a.kind == Locus::Line || b.kind == Locus::Line) {
+    const Locus& l = a.kind == Locus::Line ? a : b;
+    const Locus& o = a.kind == Locus::Line ? b : a;
+    return o.kind == Locus::Line || std::abs(l.n.dot(o.centre) - l.h) <= o.reach;
+  }
+  const double r = a.reach + b.reach;
+  return (a.centre - b.centre).squaredNorm() <= r * r * (1 + 1e-9);
+}
+
+}  // namespace
+
+int PolygonWrapperSolver::solve(std::span<const Body<2>> fixed, const Mobile<2>& mobile, std::span<Placement<2>> out) const {
+  if (fixed.size() != 2 || out.empty()) return 0;
+  thread_local std::vector<Locus> loci0, loci1;
+  thread_local std::vector<Prim> prims0, prims1;
+  thread_local std::vector<V> points, found;
+  // Frame on the first particle (its reference point): offsets of 1e6 keep their digits.
+  const Body<2>* frame = fixed[0].is_wall() ? &fixed[1] : &fixed[0];
+  const V o = frame->is_wall() ? frame->wall->point : frame->center;
+  const auto mob = cores_of(mobile.shape.get(), mobile.rotation, V::Zero(), mobile.radius);
+  if (mob.empty()) return 0;
+  loci_of(fixed[0], o, mob, mobile.radius, loci0);
+  loci_of(fixed[1], o, mob, mobile.radius, loci1);
+  if (loci0.empty() || loci1.empty()) return 0;  // e.g. a disk wall too small for the mobile
+
+  found.clear();  // distinct: positions closer than 1e-9 of the sizes are one
+  const double scale = mobile.radius + (fixed[0].is_wall() ? 0 : fixed[0].radius);
+  for (const Locus& A : loci0) {
+    prims0.clear();
+    add_prims(A, prims0);
+    for (const Locus& B : loci1) {
+      if (!may_meet(A, B)) continue;
+      prims1.clear();
+      add_prims(B, prims1);
+      points.clear();
+      const double flush = 0.5 * kContactTol * std::min(A.size, B.size);
+      for (const Prim& P : prims0)
+        for (const Prim& Q : prims1) intersect(P, Q, flush, points);
+      for (const V& x : points) {
+        bool duplicate = false;
+        for (const V& y : found) duplicate = duplicate || (x - y).squaredNorm() <= 1e-18 * scale * scale;
+        if (duplicate) continue;
+        const double g0 = least_gap(loci0, x), g1 = least_gap(loci1, x);
+        const double tol0 = kContactTol * loci0.front().size, tol1 = kContactTol * loci1.front().size;
+        if (std::abs(g0) <= tol0 && std::abs(g1) <= tol1) found.push_back(x);
+        if (found.size() == out.size()) break;
+      }
+      if (found.size() == out.size()) break;
+    }
+    if (found.size() == out.size()) break;
+  }
+  for (std::size_t k = 0; k < found.size(); ++k) out[k].position = o + found[k];
+  return static_cast<int>(found.size());
+}
+
+}  // namespace fp
