@@ -59,15 +59,31 @@ ConvexPolytopeShape<D>::ConvexPolytopeShape(std::vector<Vec<D>> vertices, std::v
     n.normalize();
     double h = -std::numeric_limits<double>::infinity();
     for (const Vec<D>& v : vertices_) h = std::max(h, n.dot(v));
-    bool seen = false;
-    for (std::size_t k = 0; k < normals_.size() && !seen; ++k)
-      seen = (normals_[k] - n).norm() <= 1e-12 && std::abs(offsets_[k] - h) <= 1e-12 * bounding_;
-    if (seen) continue;
+    int plane = -1;
+    for (std::size_t k = 0; k < normals_.size() && plane < 0; ++k)
+      if ((normals_[k] - n).norm() <= 1e-12 && std::abs(offsets_[k] - h) <= 1e-12 * bounding_) plane = static_cast<int>(k);
+    facet_plane_.push_back(plane >= 0 ? plane : static_cast<int>(normals_.size()));
+    if (plane >= 0) continue;
     normals_.push_back(n);
     offsets_.push_back(h);
     inscribed_ = std::min(inscribed_, h);
   }
   inscribed_ = std::max(0.0, inscribed_);
+  if constexpr (D == 3) {
+    // Edges: triangle sides shared by triangles of two different planes (a side inside a
+    // triangulated face is none), each once, with the planes on either side.
+    for (std::size_t f = 0; f < facets_.size(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const int a = facets_[f][k], b = facets_[f][(k + 1) % 3];
+        if (a > b) continue;  // the side is met once in each direction: keep a < b
+        for (std::size_t g = 0; g < facets_.size(); ++g) {
+          if (g == f) continue;
+          bool shares = false;
+          for (int j = 0; j < 3 && !shares; ++j) shares = facets_[g][j] == b && facets_[g][(j + 1) % 3] == a;
+          if (shares && facet_plane_[f] != facet_plane_[g]) edges_.push_back({a, b, facet_plane_[f], facet_plane_[g]});
+        }
+      }
+  }
 }
 
 template <int D>

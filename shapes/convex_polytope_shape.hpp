@@ -26,6 +26,16 @@ class ConvexPolytopeShape final : public Shape<D> {
   const std::vector<std::array<int, D>>& facets() const { return facets_; }
   /// Centroid of the solid (the family puts the reference point there).
   Vec<D> centroid() const { return centroid_; }
+  /// The distinct face planes: unit outward normals and offsets (n . x <= offset inside).
+  const std::vector<Vec<D>>& plane_normals() const { return normals_; }
+  const std::vector<double>& plane_offsets() const { return offsets_; }
+  /// 3D: an edge between two faces of different planes (vertex indices; plane indices on either
+  /// side): with the planes, the Gauss map the polytope wrapper needs.
+  struct Edge {
+    int a, b;
+    int plane0, plane1;
+  };
+  const std::vector<Edge>& edges() const { return edges_; }
 
   const char* kind() const override { return kKind; }
   double measure() const override { return measure_; }
@@ -46,6 +56,8 @@ class ConvexPolytopeShape final : public Shape<D> {
   std::vector<std::array<int, D>> facets_;
   std::vector<Vec<D>> normals_;  ///< unit outward normals of the distinct face planes
   std::vector<double> offsets_;  ///< n . x <= offset inside
+  std::vector<int> facet_plane_; ///< per facet: its plane
+  std::vector<Edge> edges_;      ///< 3D only
   Vec<D> centroid_ = Vec<D>::Zero();
   double measure_ = 0.0, bounding_ = 0.0, inscribed_ = 0.0;
 };
