@@ -5,6 +5,7 @@
 #include "contact/ball_wrapper_solver.hpp"
 #include "contact/minimisation_solver.hpp"
 #include "contact/polygon_wrapper_solver.hpp"
+#include "contact/polytope_wrapper_solver.hpp"
 #include "contact/sphere_contact_solver.hpp"
 #include "shapes/cluster_shape.hpp"
 #include "shapes/convex_polytope_shape.hpp"
@@ -20,19 +21,25 @@ SolverRegistry<D>::SolverRegistry(const NarrowPhase<D>& narrow_phase, const Mini
     const char* cores[] = {SphereShape<2>::kKind, SpherocylinderShape<2>::kKind, ConvexPolytopeShape<2>::kKind, ClusterShape<2>::kKind};
     auto wrapper = std::make_shared<PolygonWrapperSolver>();
     for (const char* mobile : cores) {
-      add_pair("wall", mobile, wrapper);
+      add_walls(mobile, wrapper);
       for (const char* fixed : cores) add_pair(fixed, mobile, wrapper);
     }
+  }
+  if constexpr (D == 3) {  // polyhedra against polyhedra and plane walls (other walls: not taken)
+    auto wrapper = std::make_shared<PolytopeWrapperSolver>();
+    add_pair(ConvexPolytopeShape<3>::kKind, ConvexPolytopeShape<3>::kKind, wrapper);
+    add_pair(kPlaneWall, ConvexPolytopeShape<3>::kKind, wrapper);
+    add_pair(kCornerWall, ConvexPolytopeShape<3>::kKind, wrapper);
   }
   const char* balls[] = {SphereShape<D>::kKind, ClusterShape<D>::kKind};
   auto wrapper = std::make_shared<BallWrapperSolver<D>>();
   for (const char* mobile : balls) {
-    add_pair("wall", mobile, wrapper);
+    add_walls(mobile, wrapper);
     for (const char* fixed : balls) add_pair(fixed, mobile, wrapper);
   }
   auto analytic = std::make_shared<SphereContactSolver<D>>();
   add_pair(SphereShape<D>::kKind, SphereShape<D>::kKind, analytic);
-  add_pair("wall", SphereShape<D>::kKind, analytic);
+  add_walls(SphereShape<D>::kKind, analytic);
 }
 
 template <int D>
@@ -42,13 +49,31 @@ void SolverRegistry<D>::add_pair(const std::string& fixed_kind, const std::strin
 }
 
 template <int D>
+void SolverRegistry<D>::add_walls(const std::string& mobile_kind, const std::shared_ptr<const ContactSolver<D>>& solver) {
+  for (const char* wall : kWallKinds) add_pair(wall, mobile_kind, solver);
+}
+
+namespace {
+template <int D>
+const char* wall_kind(const Wall<D>& w) {
+  switch (w.kind) {
+    case WallKind::Plane: return kPlaneWall;
+    case WallKind::Sphere: return kSphereWall;
+    case WallKind::Cylinder: return kCylinderWall;
+    case WallKind::Vertex: return kCornerWall;
+  }
+  return kPlaneWall;
+}
+}  // namespace
+
+template <int D>
 const ContactSolver<D>& SolverRegistry<D>::pick(std::span<const Body<D>> fixed, const Mobile<D>& mobile) const {
   if (pairs_.empty() || fixed.empty()) return *default_;
   // A mobile without a shape is a sphere of its radius (the sphere fast path's form), as a fixed
   // body without a particle is: the minimisation solver cannot solve it (it needs the shape).
   const std::string mobile_kind = mobile.shape ? mobile.shape->kind() : SphereShape<D>::kKind;
   const auto solvers_of = [&](const Body<D>& b) -> const std::vector<std::shared_ptr<const ContactSolver<D>>>* {
-    const std::string fixed_kind = b.is_wall() ? "wall" : b.shaped ? b.shaped->shape->kind() : SphereShape<D>::kKind;
+    const std::string fixed_kind = b.is_wall() ? wall_kind(*b.wall) : b.shaped ? b.shaped->shape->kind() : SphereShape<D>::kKind;
     const auto it = pairs_.find({fixed_kind, mobile_kind});
     return it == pairs_.end() ? nullptr : &it->second;
   };

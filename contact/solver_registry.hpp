@@ -1,6 +1,7 @@
 #pragma once
 // Which contact solver places a mobile particle against given fixed bodies. Solvers are
-// registered for shape-kind pairs (fixed kind, mobile kind); walls are the kind "wall".
+// registered for shape-kind pairs (fixed kind, mobile kind); a wall's kind is that of its
+// surface (kPlaneWall, ...), so a solver can take plane walls and leave curved ones.
 // Minimisation is the default for every pair. A problem goes to the most recently registered
 // solver that is registered for EVERY (fixed, mobile) pair of the problem, else to the default.
 // In 2D the polygon wrapper covers disks, stadiums, polygons, clusters and walls; the ball
@@ -20,6 +21,13 @@
 
 namespace fp {
 
+/// The registry kinds of the container walls (core/geometry/wall.hpp).
+inline constexpr const char* kPlaneWall = "wall:plane";
+inline constexpr const char* kSphereWall = "wall:sphere";
+inline constexpr const char* kCylinderWall = "wall:cylinder";
+inline constexpr const char* kCornerWall = "wall:corner";  ///< a reflex corner (WallKind::Vertex)
+inline constexpr const char* kWallKinds[] = {kPlaneWall, kSphereWall, kCylinderWall, kCornerWall};
+
 template <int D>
 class SolverRegistry {
  public:
@@ -32,6 +40,8 @@ class SolverRegistry {
   /// Registers `solver` for (fixed_kind, mobile_kind); it takes precedence over those registered
   /// before it wherever it covers every pair of a problem.
   void add_pair(const std::string& fixed_kind, const std::string& mobile_kind, std::shared_ptr<const ContactSolver<D>> solver);
+  /// add_pair for every kind of wall.
+  void add_walls(const std::string& mobile_kind, const std::shared_ptr<const ContactSolver<D>>& solver);
 
   /// The solver for this problem (never null).
   const ContactSolver<D>& pick(std::span<const Body<D>> fixed, const Mobile<D>& mobile) const;

@@ -175,7 +175,7 @@ void override_round() {
   const Wall<D> wall = Wall<D>::plane(Vec<D>::Zero(), Vec<D>::UnitX());
   f[0] = Body<D>::of_wall(wall);
   EXPECT_TRUE(is_analytic<D>(reg.pick(f, sphere_mobile)));
-  reg.add_pair("wall", "sphere", other);  // now it covers both
+  reg.add_pair(kPlaneWall, "sphere", other);  // now it covers both
   EXPECT_EQ(&reg.pick(f, sphere_mobile), other.get());
 
   // A new default: what no registered solver covers (a sphere against an ellipsoid).

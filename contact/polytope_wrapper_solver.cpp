@@ -1,0 +1,338 @@
+#include "contact/polytope_wrapper_solver.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <vector>
+
+#include "contact/sphere_contact_solver.hpp"
+#include "contact/sphere_two_contact.hpp"
+#include "shapes/convex_polytope_shape.hpp"
+
+namespace fp {
+namespace {
+
+using V = Vec3;
+using Poly = ConvexPolytopeShape<3>;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+/// Starts spread along the curve of the first two bodies (every loop of it is walked once).
+constexpr int kLoopSamples = 8;
+
+/// The positions x of the mobile's reference point where it overlaps a body: the convex set
+/// {x : n_k . (x - c) <= h_k for every k}, c the body's reference point (so the planes can be
+/// kept while the frame moves). value() is 0 on the wrapper, > 0 apart, < 0 on overlap.
+struct Obstacle {
+  std::vector<V> n;
+  std::vector<double> h;  ///< relative to `c`
+  V c = V::Zero();
+
+  /// max_k (n_k . (x - c) - h_k) and its plane.
+  double value(const V& x, int& arg) const {
+    double best = -kInf;
+    arg = -1;
+    const V y = x - c;
+    for (std::size_t k = 0; k < n.size(); ++k)
+      if (const double v = n[k].dot(y) - h[k]; v > best) best = v, arg = static_cast<int>(k);
+    return best;
+  }
+  double value(const V& x) const {
+    int arg;
+    return value(x, arg);
+  }
+};
+
+/// Is the unit vector p (on the great circle through a and b) on the shorter arc from a to b?
+bool on_arc(const V& a, const V& b, const V& p) {
+  constexpr double kSlack = 1e-12;
+  const V ab = a.cross(b);
+  return a.cross(p).dot(ab) >= -kSlack && p.cross(b).dot(ab) >= -kSlack && p.dot(a + b) > 0;
+}
+
+double max_dot(const std::vector<V>& pts, const V& u) {
+  double m = -kInf;
+  for (const V& p : pts) m = std::max(m, u.dot(p));
+  return m;
+}
+
+/// The mobile turned: vertices (about its reference point), plane normals, for one problem.
+struct TurnedMobile {
+  const Poly* shape = nullptr;
+  Mat<3> rotation = Mat<3>::Identity();
+  std::vector<V> vertices, normals;
+
+  void set(const Poly& s, const Mat<3>& R) {
+    shape = &s, rotation = R;
+    vertices.clear(), normals.clear();
+    for (const V& v : s.vertices()) vertices.push_back(R * v);
+    for (const V& n : s.plane_normals()) normals.push_back(R * n);
+  }
+};
+
+/// O = B (+) (-A) of a polyhedron B (rotation RB, reference point c) for the turned mobile A, by
+/// its face planes: faces of B, faces of -A, and edge pairs whose Gauss arcs cross.
+void polytope_obstacle(const Poly& B, const Mat<3>& RB, const V& c, const TurnedMobile& A, Obstacle& O) {
+  thread_local std::vector<V> bv, bn;
+  bv.clear(), bn.clear();
+  for (const V& v : B.vertices()) bv.push_back(RB * v);
+  for (const V& n : B.plane_normals()) bn.push_back(RB * n);
+  O.n.clear(), O.h.clear();
+  O.c = c;
+  // Faces of B with the support of -A along their normal.
+  for (std::size_t k = 0; k < bn.size(); ++k) {
+    O.n.push_back(bn[k]);
+    O.h.push_back(B.plane_offsets()[k] + max_dot(A.vertices, -bn[k]));
+  }
+  // Faces of -A (normals -RA n_g) with the support of B.
+  const auto& a_offsets = A.shape->plane_offsets();
+  for (std::size_t g = 0; g < A.normals.size(); ++g) {
+    const V u = -A.normals[g];
+    O.n.push_back(u);
+    O.h.push_back(max_dot(bv, u) + a_offsets[g]);
+  }
+  // Edge-edge: the planes perpendicular to an edge of B and an edge of -A whose Gauss arcs (from
+  // one adjacent face normal to the other) cross; both edges are supports along that normal.
+  for (const Poly::Edge& eb : B.edges()) {
+    const V& nb0 = bn[static_cast<std::size_t>(eb.plane0)];
+    const V& nb1 = bn[static_cast<std::size_t>(eb.plane1)];
+    const V db = bv[static_cast<std::size_t>(eb.b)] - bv[static_cast<std::size_t>(eb.a)];
+    for (const Poly::Edge& ea : A.shape->edges()) {
+      const V na0 = -A.normals[static_cast<std::size_t>(ea.plane0)], na1 = -A.normals[static_cast<std::size_t>(ea.plane1)];
+      const V da = A.vertices[static_cast<std::size_t>(ea.b)] - A.vertices[static_cast<std::size_t>(ea.a)];
+      V p = db.cross(da);
+      const double pn = p.norm();
+      if (!(pn > 1e-12 * db.norm() * da.norm())) continue;  // parallel edges: no edge-edge face
+      p /= pn;
+      if (p.dot(nb0 + nb1) < 0) p = -p;
+      if (!on_arc(nb0, nb1, p) || !on_arc(na0, na1, p)) continue;
+      O.n.push_back(p);
+      O.h.push_back(p.dot(bv[static_cast<std::size_t>(eb.a)]) - p.dot(A.vertices[static_cast<std::size_t>(ea.a)]));
+    }
+  }
+}
+
+/// The obstacle of a plane wall (inward normal m): the mobile crosses it where m . x <= c.
+void plane_obstacle(const Wall<3>& w, const TurnedMobile& A, Obstacle& O) {
+  O.n.assign(1, w.normal);
+  O.c = w.point;
+  O.h.assign(1, max_dot(A.vertices, -w.normal));  // m . (x - p) <= -min_j m . a_j
+}
+
+/// The obstacle of a reflex corner v (the mobile must not hold it): -A placed at v.
+void corner_obstacle(const Wall<3>& w, const TurnedMobile& A, Obstacle& O) {
+  O.n.clear(), O.h.clear();
+  O.c = w.point;
+  for (std::size_t g = 0; g < A.normals.size(); ++g) {
+    O.n.push_back(-A.normals[g]);
+    O.h.push_back(A.shape->plane_offsets()[g]);
+  }
+}
+
+/// Obstacles of the particles met so far for one turned mobile (the front asks for many pairs
+/// around one front particle with one mobile): each particle's planes are built once.
+struct ObstacleCache {
+  struct Entry {
+    const Particle<3>* particle;
+    V center;
+    Obstacle obstacle;
+  };
+  const Shape<3>* mobile = nullptr;
+  Mat<3> rotation = Mat<3>::Identity();
+  TurnedMobile turned;
+  std::deque<Entry> entries;  ///< a deque: the references handed out stay valid as it grows
+
+  void use(const Poly& shape, const Mat<3>& R) {
+    if (&shape == mobile && R == rotation && entries.size() < 256) return;
+    mobile = &shape, rotation = R;
+    turned.set(shape, R);
+    entries.clear();
+  }
+  const Obstacle& of(const Particle<3>& p, const Poly& shape) {
+    for (const Entry& e : entries)
+      if (e.particle == &p && e.center == p.pose.position) return e.obstacle;
+    entries.push_back({&p, p.pose.position, Obstacle{}});
+    polytope_obstacle(shape, p.pose.rotation, p.pose.position, turned, entries.back().obstacle);
+    return entries.back().obstacle;
+  }
+};
+
+/// Damped Newton steps onto the curve where both gap functions vanish: each step goes to the
+/// nearest point of the line where the two active planes meet, halved until |f_P| + |f_Q|
+/// decreases (the active planes of piecewise-linear functions can otherwise alternate without
+/// end). False if the active planes are parallel or no step decreases it.
+bool onto_curve(const Obstacle& P, const Obstacle& Q, double tol, V& x, int& a, int& b) {
+  double fp = P.value(x, a), fq = Q.value(x, b);
+  for (int it = 0; it < 60; ++it) {
+    const V na = P.n[a], nb = Q.n[b];
+    const double g = na.dot(nb);
+    const double det = 1 - g * g;  // unit normals: the Gram determinant
+    if (!(det > 1e-12)) return false;
+    // x - (l na + m nb) on both planes: [1 g; g 1] (l, m) = (fp, fq).
+    const V step = -((fp - g * fq) / det * na + (fq - g * fp) / det * nb);
+    const double merit = std::abs(fp) + std::abs(fq);
+    bool moved = false;
+    for (double lambda = 1; lambda >= 1.0 / 64 && !moved; lambda *= 0.5) {
+      const V y = x + lambda * step;
+      int ay, by;
+      const double gp = P.value(y, ay), gq = Q.value(y, by);
+      if (std::abs(gp) + std::abs(gq) < merit || (lambda == 1 && std::abs(gp) <= tol && std::abs(gq) <= tol)) {
+        x = y, a = ay, b = by, fp = gp, fq = gq;
+        moved = true;
+      }
+    }
+    if (std::abs(fp) <= tol && std::abs(fq) <= tol) return true;
+    if (!moved) return false;
+  }
+  return false;
+}
+
+}  // namespace
+
+int PolytopeWrapperSolver::solve(std::span<const Body<3>> fixed, const Mobile<3>& mobile, std::span<Placement<3>> out) const {
+  if (fixed.size() != 3 || out.empty() || fixed[0].is_wall() || !fixed[0].shaped) return 0;
+  const auto* mobile_shape = dynamic_cast<const Poly*>(mobile.shape.get());
+  if (!mobile_shape) return 0;
+  thread_local ObstacleCache cache;
+  thread_local std::array<Obstacle, 3> walls;
+  cache.use(*mobile_shape, mobile.rotation);
+  std::array<const Obstacle*, 3> O{};
+  std::array<double, 3> tol{};
+  for (int i = 0; i < 3; ++i) {
+    const Body<3>& b = fixed[static_cast<std::size_t>(i)];
+    if (b.is_wall()) {
+      Obstacle& w = walls[static_cast<std::size_t>(i)];
+      if (b.wall->kind == WallKind::Plane) plane_obstacle(*b.wall, cache.turned, w);
+      else if (b.wall->kind == WallKind::Vertex) corner_obstacle(*b.wall, cache.turned, w);
+      else return 0;  // sphere and cylinder walls are not registered for polyhedra
+      O[static_cast<std::size_t>(i)] = &w;
+      tol[static_cast<std::size_t>(i)] = kContactTol * mobile.radius;
+    } else {
+      const auto* shape = b.shaped ? dynamic_cast<const Poly*>(b.shaped->shape.get()) : nullptr;
+      if (!shape) return 0;
+      O[static_cast<std::size_t>(i)] = &cache.of(*b.shaped, *shape);
+      tol[static_cast<std::size_t>(i)] = kContactTol * std::min(b.radius, mobile.radius);
+    }
+  }
+  // Everything in the frame of the first particle's reference point.
+  const V origin = fixed[0].center;
+  thread_local std::array<Obstacle, 3> local;
+  for (int i = 0; i < 3; ++i) {
+    local[static_cast<std::size_t>(i)] = *O[static_cast<std::size_t>(i)];
+    local[static_cast<std::size_t>(i)].c -= origin;
+  }
+  const Obstacle &P = local[0], &Q = local[1], &R = local[2];
+
+  // Starts: where equivalent spheres (between inscribed and circumscribed) touch the three bodies.
+  std::vector<V> starts;
+  {
+    const SphereContactSolver<3> spheres;
+    std::array<Body<3>, 3> eq;
+    std::array<Placement<3>, ContactSolver<3>::kMaxSolutions> sols;
+    for (const double w : {0.5, 1.0, 0.0}) {
+      const auto radius = [&](const Shape<3>& s) { return w * s.bounding_radius() + (1 - w) * s.inscribed_radius(); };
+      for (int i = 0; i < 3; ++i) {
+        eq[static_cast<std::size_t>(i)] = fixed[static_cast<std::size_t>(i)];
+        if (!fixed[static_cast<std::size_t>(i)].is_wall()) eq[static_cast<std::size_t>(i)].radius = radius(*fixed[static_cast<std::size_t>(i)].shaped->shape);
+      }
+      Mobile<3> m;
+      m.radius = radius(*mobile_shape);
+      const int n = spheres.solve(std::span<const Body<3>>(eq.data(), 3), m, sols);
+      for (int k = 0; k < n; ++k) starts.push_back(sols[static_cast<std::size_t>(k)].position - origin);
+    }
+    // The curve of the first two wrappers may have several loops (a body piercing another's
+    // wrapper): starts spread along where equivalent spheres touch those two alone.
+    thread_local std::vector<V> around;
+    around.clear();
+    const auto mid = [](const Shape<3>& s) { return 0.5 * (s.bounding_radius() + s.inscribed_radius()); };
+    Body<3> b1 = fixed[1];
+    if (!b1.is_wall()) b1.radius = mid(*b1.shaped->shape);
+    two_contact_positions(fixed[0].center, mid(*fixed[0].shaped->shape), b1, mid(*mobile_shape), kLoopSamples, around);
+    for (const V& x : around) starts.push_back(x - origin);
+    if (starts.empty()) starts.push_back(V::Zero());  // from s0's centre: Newton finds the curve if any
+  }
+
+  const double scale = fixed[0].radius + mobile.radius;
+  const double snap = 1e-13 * scale;  // Newton: close enough to both planes to walk from
+  std::vector<V> found;
+  std::vector<std::pair<int, int>> walked;  // face pairs of the loops already walked
+  const auto keep = [&](const V& x) {
+    if (found.size() >= out.size()) return;
+    for (int i = 0; i < 3; ++i)
+      if (!(std::abs(local[static_cast<std::size_t>(i)].value(x)) <= tol[static_cast<std::size_t>(i)])) return;
+    for (const V& y : found)
+      if ((x - y).squaredNorm() <= 1e-18 * scale * scale) return;
+    found.push_back(x);
+  };
+  // The points of the segment x + s t, s in [0, len], on R's boundary (where it enters or leaves R).
+  const auto crossings = [&](const V& x, const V& t, double len) {
+    double lo = -kInf, hi = kInf;
+    for (std::size_t k = 0; k < R.n.size(); ++k) {
+      const double rate = R.n[k].dot(t), val = R.n[k].dot(x - R.c) - R.h[k];
+      if (std::abs(rate) <= 1e-15) {
+        if (val > 0) return;  // beside the segment's whole line
+        continue;
+      }
+      const double s = -val / rate;
+      if (rate > 0) hi = std::min(hi, s);
+      else lo = std::max(lo, s);
+    }
+    if (lo > hi) return;
+    // A crossing at a corner of the curve may round to just outside both segments that meet there.
+    const double slack = 1e-12 * scale;
+    for (const double s : {lo, hi})
+      if (s >= -slack && s <= len + slack) keep(x + std::clamp(s, 0.0, len) * t);
+  };
+
+  for (V x : starts) {
+    int a = -1, b = -1;
+    if (!onto_curve(P, Q, snap, x, a, b)) continue;
+    if (std::find(walked.begin(), walked.end(), std::make_pair(a, b)) != walked.end()) continue;
+    // Walk the loop of P's and Q's boundaries from x, face pair by face pair, in the direction
+    // n_a x n_b (one orientation for the whole loop).
+    const V x0 = x;
+    const int a0 = a, b0 = b;
+    const int max_steps = 4 * static_cast<int>(P.n.size() + Q.n.size()) + 16;
+    bool closed = false;
+    for (int step = 0; step < max_steps && !closed; ++step) {
+      walked.emplace_back(a, b);
+      V t = P.n[a].cross(Q.n[b]);
+      const double tn = t.norm();
+      if (!(tn > 1e-12)) break;  // parallel faces: a flush contact, no curve
+      t /= tn;
+      // The segment ends where another plane of P or Q is reached.
+      double len = kInf;
+      int next_p = -1, next_q = -1;
+      for (int pass = 0; pass < 2; ++pass) {
+        const Obstacle& S = pass == 0 ? P : Q;
+        const int skip = pass == 0 ? a : b;
+        for (std::size_t k = 0; k < S.n.size(); ++k) {
+          if (static_cast<int>(k) == skip) continue;
+          const double rate = S.n[k].dot(t);
+          if (!(rate > 1e-15)) continue;
+          const double s = std::max(0.0, (S.h[k] - S.n[k].dot(x - S.c)) / rate);
+          if (s < len) len = s, next_p = pass == 0 ? static_cast<int>(k) : -1, next_q = pass == 1 ? static_cast<int>(k) : -1;
+        }
+      }
+      if (!(len < kInf)) break;
+      // Back on the first segment: scan up to the start and stop.
+      if (step > 0 && a == a0 && b == b0) {
+        const double to_start = (x0 - x).dot(t);
+        if (to_start >= 0 && to_start <= len) {
+          crossings(x, t, to_start);
+          closed = true;
+          break;
+        }
+      }
+      crossings(x, t, len);
+      x += len * t;
+      if (next_p >= 0) a = next_p;
+      else b = next_q;
+    }
+    if (found.size() >= out.size()) break;
+  }
+  for (std::size_t k = 0; k < found.size(); ++k) out[k].position = origin + found[k];
+  return static_cast<int>(found.size());
+}
+
+}  // namespace fp
