@@ -72,6 +72,7 @@ int run_shape_pack(const Scene& scene, const PackCommandOptions& o) {
                  {"gap_tolerance", res.gap_tolerance},
                  {"mean_coordination", v.mean_coordination},
                  {"max_overlap_over_rmin", v.max_overlap_rel},
+                 {"max_contact_gap_over_rmin", v.max_contact_gap_rel},
                  {"max_outside_over_r", v.max_outside_rel},
                  {"particles_per_second", res.seconds > 0 ? n / res.seconds : 0.0}};
   const FrontCounters& c = res.counters;
@@ -84,7 +85,8 @@ int run_shape_pack(const Scene& scene, const PackCommandOptions& o) {
   rec.counters.insert(rec.counters.end(), extra.begin(), extra.end());
   rec.info = {{"stop_reason", to_string(res.stop)},
               {"validation", v.ok ? "ok" : "FAILED"},
-              {"minimisation_algorithm", scene.packer.minimisation.algorithm}};
+              {"minimisation_algorithm", scene.packer.minimisation.algorithm},
+              {"contact_solver", scene.packer.contact_solver == ContactSolverChoice::Auto ? "auto" : "minimisation"}};
 
   const auto t_write = Clock::now();
   {
@@ -101,11 +103,12 @@ int run_shape_pack(const Scene& scene, const PackCommandOptions& o) {
     std::printf("  particles      %s\n", rec.distribution_description.c_str());
     std::printf("  placed         %zu   (stop: %s)\n", P.size(), to_string(res.stop));
     std::printf("  %s     %.4f of the container\n", D == 3 ? "volume fraction" : "area fraction  ", vf);
-    std::printf("  coordination   %.3f   (contacts: |gap| <= %.3g x smaller circumscribed radius)\n", v.mean_coordination,
-                res.gap_tolerance);
-    std::printf("  solver         %s: %llu solves (%llu analytic), %llu minimisations, %llu gap evaluations, %llu FCL queries\n",
-                scene.packer.minimisation.algorithm.c_str(), static_cast<unsigned long long>(c.solves),
-                static_cast<unsigned long long>(res.analytic_solves), static_cast<unsigned long long>(ms.minimisations),
+    std::printf("  coordination   %.3f   (contacts: |gap| <= %.3g x smaller circumscribed radius; the largest: %.2g)\n",
+                v.mean_coordination, res.gap_tolerance, v.max_contact_gap_rel);
+    std::printf("  solver         %llu solves: %llu in closed form (wrappers, spheres), the others by minimisation (%s): %llu "
+                "minimisations, %llu gap evaluations; %llu FCL queries\n",
+                static_cast<unsigned long long>(c.solves), static_cast<unsigned long long>(res.analytic_solves),
+                scene.packer.minimisation.algorithm.c_str(), static_cast<unsigned long long>(ms.minimisations),
                 static_cast<unsigned long long>(ms.evaluations), static_cast<unsigned long long>(res.fcl_queries));
     std::printf("  validation     %s\n", v.summary().c_str());
     std::printf("  time           pack %.3f s (%.1f particles/s), validation %.3f s, write %.3f s\n", res.seconds,

@@ -7,7 +7,6 @@
 #include <limits>
 #include <vector>
 
-#include "contact/sphere_contact_solver.hpp"
 #include "contact/sphere_two_contact.hpp"
 #include "shapes/convex_polytope_shape.hpp"
 
@@ -18,7 +17,7 @@ using V = Vec3;
 using Poly = ConvexPolytopeShape<3>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 /// Starts spread along the curve of the first two bodies (every loop of it is walked once).
-constexpr int kLoopSamples = 8;
+constexpr int kLoopSamples = 12;
 
 /// The positions x of the mobile's reference point where it overlaps a body: the convex set
 /// {x : n_k . (x - c) <= h_k for every k}, c the body's reference point (so the planes can be
@@ -187,6 +186,102 @@ bool onto_curve(const Obstacle& P, const Obstacle& Q, double tol, V& x, int& a, 
   return false;
 }
 
+/// A piece of the curve where the mobile touches two bodies: x + s t, s in [0, len].
+struct Segment {
+  V x, t;
+  double len;
+};
+
+/// Walks every loop of the curve where P's and Q's boundaries meet (frame centred on s0), from
+/// starts spread along where equivalent spheres touch the two bodies (a loop is walked once).
+void walk_curve(const Obstacle& P, const Obstacle& Q, const std::vector<V>& starts, double scale, std::vector<Segment>& curve) {
+  curve.clear();
+  const double snap = 1e-13 * scale;  // Newton: close enough to both planes to walk from
+  std::vector<std::pair<int, int>> walked;  // face pairs of the loops already walked
+  for (V x : starts) {
+    int a = -1, b = -1;
+    if (!onto_curve(P, Q, snap, x, a, b)) continue;
+    if (std::find(walked.begin(), walked.end(), std::make_pair(a, b)) != walked.end()) continue;
+    // Face pair by face pair, in the direction n_a x n_b (one orientation for the whole loop).
+    const V x0 = x;
+    const int a0 = a, b0 = b;
+    const int max_steps = 4 * static_cast<int>(P.n.size() + Q.n.size()) + 16;
+    for (int step = 0; step < max_steps; ++step) {
+      walked.emplace_back(a, b);
+      V t = P.n[a].cross(Q.n[b]);
+      const double tn = t.norm();
+      if (!(tn > 1e-12)) break;  // parallel faces: a flush contact, no curve
+      t /= tn;
+      // The segment ends where another plane of P or Q is reached.
+      double len = kInf;
+      int next_p = -1, next_q = -1;
+      for (int pass = 0; pass < 2; ++pass) {
+        const Obstacle& S = pass == 0 ? P : Q;
+        const int skip = pass == 0 ? a : b;
+        for (std::size_t k = 0; k < S.n.size(); ++k) {
+          if (static_cast<int>(k) == skip) continue;
+          const double rate = S.n[k].dot(t);
+          if (!(rate > 1e-15)) continue;
+          const double at = std::max(0.0, (S.h[k] - S.n[k].dot(x - S.c)) / rate);
+          if (at < len) len = at, next_p = pass == 0 ? static_cast<int>(k) : -1, next_q = pass == 1 ? static_cast<int>(k) : -1;
+        }
+      }
+      if (!(len < kInf)) break;
+      // Back on the first segment: up to the start, and the loop is closed.
+      if (step > 0 && a == a0 && b == b0) {
+        const double to_start = (x0 - x).dot(t);
+        if (to_start >= 0 && to_start <= len) {
+          curve.push_back({x, t, to_start});
+          break;
+        }
+      }
+      curve.push_back({x, t, len});
+      x += len * t;
+      if (next_p >= 0) a = next_p;
+      else b = next_q;
+    }
+  }
+}
+
+/// The curves of the (front particle, body) pairs met so far, for one mobile: the front tries
+/// each pair with many third bodies, and the curve does not depend on the third.
+struct CurveCache {
+  struct Entry {
+    const Particle<3>* s0;
+    V s0_center;
+    const Particle<3>* particle;  ///< the second body, or null for a wall
+    V point, normal;              ///< its centre, or the wall's point and normal
+    std::vector<Segment> curve;
+  };
+  const Shape<3>* mobile = nullptr;
+  Mat<3> rotation = Mat<3>::Identity();
+  std::deque<Entry> entries;
+
+  const std::vector<Segment>& of(const Body<3>& b0, const Body<3>& b1, const Obstacle& P, const Obstacle& Q, const Poly& shape,
+                                 double scale) {
+    const V point = b1.is_wall() ? b1.wall->point : b1.center;
+    const V normal = b1.is_wall() ? b1.wall->normal : V::Zero();
+    const Particle<3>* particle = b1.is_wall() ? nullptr : b1.shaped;
+    for (const Entry& e : entries)
+      if (e.s0 == b0.shaped && e.s0_center == b0.center && e.particle == particle && e.point == point && e.normal == normal)
+        return e.curve;
+    if (entries.size() >= 256) entries.clear();
+    // Starts spread along where equivalent spheres touch the two bodies (every loop of the curve
+    // lies near that circle).
+    thread_local std::vector<V> starts;
+    starts.clear();
+    const auto mid = [](const Shape<3>& s) { return 0.5 * (s.bounding_radius() + s.inscribed_radius()); };
+    Body<3> eq = b1;
+    if (!eq.is_wall()) eq.radius = mid(*eq.shaped->shape);
+    two_contact_positions(b0.center, mid(*b0.shaped->shape), eq, mid(shape), kLoopSamples, starts);
+    for (V& x : starts) x -= b0.center;
+    if (starts.empty()) starts.push_back(V::Zero());  // from s0's centre: Newton finds the curve if any
+    entries.push_back({b0.shaped, b0.center, particle, point, normal, {}});
+    walk_curve(P, Q, starts, scale, entries.back().curve);
+    return entries.back().curve;
+  }
+};
+
 }  // namespace
 
 int PolytopeWrapperSolver::solve(std::span<const Body<3>> fixed, const Mobile<3>& mobile, std::span<Placement<3>> out) const {
@@ -194,8 +289,13 @@ int PolytopeWrapperSolver::solve(std::span<const Body<3>> fixed, const Mobile<3>
   const auto* mobile_shape = dynamic_cast<const Poly*>(mobile.shape.get());
   if (!mobile_shape) return 0;
   thread_local ObstacleCache cache;
+  thread_local CurveCache curves;
   thread_local std::array<Obstacle, 3> walls;
   cache.use(*mobile_shape, mobile.rotation);
+  if (curves.mobile != mobile_shape || curves.rotation != mobile.rotation) {
+    curves.mobile = mobile_shape, curves.rotation = mobile.rotation;
+    curves.entries.clear();
+  }
   std::array<const Obstacle*, 3> O{};
   std::array<double, 3> tol{};
   for (int i = 0; i < 3; ++i) {
@@ -221,41 +321,11 @@ int PolytopeWrapperSolver::solve(std::span<const Body<3>> fixed, const Mobile<3>
     local[static_cast<std::size_t>(i)] = *O[static_cast<std::size_t>(i)];
     local[static_cast<std::size_t>(i)].c -= origin;
   }
-  const Obstacle &P = local[0], &Q = local[1], &R = local[2];
-
-  // Starts: where equivalent spheres (between inscribed and circumscribed) touch the three bodies.
-  std::vector<V> starts;
-  {
-    const SphereContactSolver<3> spheres;
-    std::array<Body<3>, 3> eq;
-    std::array<Placement<3>, ContactSolver<3>::kMaxSolutions> sols;
-    for (const double w : {0.5, 1.0, 0.0}) {
-      const auto radius = [&](const Shape<3>& s) { return w * s.bounding_radius() + (1 - w) * s.inscribed_radius(); };
-      for (int i = 0; i < 3; ++i) {
-        eq[static_cast<std::size_t>(i)] = fixed[static_cast<std::size_t>(i)];
-        if (!fixed[static_cast<std::size_t>(i)].is_wall()) eq[static_cast<std::size_t>(i)].radius = radius(*fixed[static_cast<std::size_t>(i)].shaped->shape);
-      }
-      Mobile<3> m;
-      m.radius = radius(*mobile_shape);
-      const int n = spheres.solve(std::span<const Body<3>>(eq.data(), 3), m, sols);
-      for (int k = 0; k < n; ++k) starts.push_back(sols[static_cast<std::size_t>(k)].position - origin);
-    }
-    // The curve of the first two wrappers may have several loops (a body piercing another's
-    // wrapper): starts spread along where equivalent spheres touch those two alone.
-    thread_local std::vector<V> around;
-    around.clear();
-    const auto mid = [](const Shape<3>& s) { return 0.5 * (s.bounding_radius() + s.inscribed_radius()); };
-    Body<3> b1 = fixed[1];
-    if (!b1.is_wall()) b1.radius = mid(*b1.shaped->shape);
-    two_contact_positions(fixed[0].center, mid(*fixed[0].shaped->shape), b1, mid(*mobile_shape), kLoopSamples, around);
-    for (const V& x : around) starts.push_back(x - origin);
-    if (starts.empty()) starts.push_back(V::Zero());  // from s0's centre: Newton finds the curve if any
-  }
-
+  const Obstacle& R = local[2];
   const double scale = fixed[0].radius + mobile.radius;
-  const double snap = 1e-13 * scale;  // Newton: close enough to both planes to walk from
+  const std::vector<Segment>& curve = curves.of(fixed[0], fixed[1], local[0], local[1], *mobile_shape, scale);
+
   std::vector<V> found;
-  std::vector<std::pair<int, int>> walked;  // face pairs of the loops already walked
   const auto keep = [&](const V& x) {
     if (found.size() >= out.size()) return;
     for (int i = 0; i < 3; ++i)
@@ -264,71 +334,31 @@ int PolytopeWrapperSolver::solve(std::span<const Body<3>> fixed, const Mobile<3>
       if ((x - y).squaredNorm() <= 1e-18 * scale * scale) return;
     found.push_back(x);
   };
-  // The points of the segment x + s t, s in [0, len], on R's boundary (where it enters or leaves R).
-  const auto crossings = [&](const V& x, const V& t, double len) {
+  // The points of each segment x + s t, s in [0, len], on R's boundary (where it enters or leaves R).
+  const double slack = 1e-12 * scale;  // a crossing at a corner of the curve may round to just outside both segments
+  // R's boundary lies within its body's circumscribed radius plus the mobile's of R.c (a wall has
+  // no such bound): segments farther off are skipped.
+  const double reach = fixed[2].is_wall() ? kInf : fixed[2].radius + mobile.radius;
+  for (const Segment& g : curve) {
+    if (reach < kInf) {
+      const double along = std::clamp((R.c - g.x).dot(g.t), 0.0, g.len);
+      if ((g.x + along * g.t - R.c).squaredNorm() > reach * reach * (1 + 1e-9)) continue;
+    }
     double lo = -kInf, hi = kInf;
-    for (std::size_t k = 0; k < R.n.size(); ++k) {
-      const double rate = R.n[k].dot(t), val = R.n[k].dot(x - R.c) - R.h[k];
+    bool beside = false;
+    for (std::size_t k = 0; k < R.n.size() && !beside; ++k) {
+      const double rate = R.n[k].dot(g.t), val = R.n[k].dot(g.x - R.c) - R.h[k];
       if (std::abs(rate) <= 1e-15) {
-        if (val > 0) return;  // beside the segment's whole line
+        beside = val > 0;  // the segment's whole line is outside this plane
         continue;
       }
-      const double s = -val / rate;
-      if (rate > 0) hi = std::min(hi, s);
-      else lo = std::max(lo, s);
+      const double at = -val / rate;
+      if (rate > 0) hi = std::min(hi, at);
+      else lo = std::max(lo, at);
     }
-    if (lo > hi) return;
-    // A crossing at a corner of the curve may round to just outside both segments that meet there.
-    const double slack = 1e-12 * scale;
-    for (const double s : {lo, hi})
-      if (s >= -slack && s <= len + slack) keep(x + std::clamp(s, 0.0, len) * t);
-  };
-
-  for (V x : starts) {
-    int a = -1, b = -1;
-    if (!onto_curve(P, Q, snap, x, a, b)) continue;
-    if (std::find(walked.begin(), walked.end(), std::make_pair(a, b)) != walked.end()) continue;
-    // Walk the loop of P's and Q's boundaries from x, face pair by face pair, in the direction
-    // n_a x n_b (one orientation for the whole loop).
-    const V x0 = x;
-    const int a0 = a, b0 = b;
-    const int max_steps = 4 * static_cast<int>(P.n.size() + Q.n.size()) + 16;
-    bool closed = false;
-    for (int step = 0; step < max_steps && !closed; ++step) {
-      walked.emplace_back(a, b);
-      V t = P.n[a].cross(Q.n[b]);
-      const double tn = t.norm();
-      if (!(tn > 1e-12)) break;  // parallel faces: a flush contact, no curve
-      t /= tn;
-      // The segment ends where another plane of P or Q is reached.
-      double len = kInf;
-      int next_p = -1, next_q = -1;
-      for (int pass = 0; pass < 2; ++pass) {
-        const Obstacle& S = pass == 0 ? P : Q;
-        const int skip = pass == 0 ? a : b;
-        for (std::size_t k = 0; k < S.n.size(); ++k) {
-          if (static_cast<int>(k) == skip) continue;
-          const double rate = S.n[k].dot(t);
-          if (!(rate > 1e-15)) continue;
-          const double s = std::max(0.0, (S.h[k] - S.n[k].dot(x - S.c)) / rate);
-          if (s < len) len = s, next_p = pass == 0 ? static_cast<int>(k) : -1, next_q = pass == 1 ? static_cast<int>(k) : -1;
-        }
-      }
-      if (!(len < kInf)) break;
-      // Back on the first segment: scan up to the start and stop.
-      if (step > 0 && a == a0 && b == b0) {
-        const double to_start = (x0 - x).dot(t);
-        if (to_start >= 0 && to_start <= len) {
-          crossings(x, t, to_start);
-          closed = true;
-          break;
-        }
-      }
-      crossings(x, t, len);
-      x += len * t;
-      if (next_p >= 0) a = next_p;
-      else b = next_q;
-    }
+    if (beside || lo > hi) continue;
+    for (const double at : {lo, hi})
+      if (at >= -slack && at <= g.len + slack) keep(g.x + std::clamp(at, 0.0, g.len) * g.t);
     if (found.size() >= out.size()) break;
   }
   for (std::size_t k = 0; k < found.size(); ++k) out[k].position = origin + found[k];

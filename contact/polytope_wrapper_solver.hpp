@@ -11,13 +11,15 @@
 //
 // Positions touching three bodies are the points of the three wrappers' boundaries. They are found
 // without enumerating face triples, by walking the intersection curve C of the first two
-// boundaries (paper: "walk the intersection curve of two wrappers"): a start on C (Newton steps on
-// the two piecewise-linear gap functions from the equivalent-sphere estimate), then along C face
-// pair by face pair (each piece a segment on a face of each: the next face is where the segment
-// leaves one), and on each segment the points where it crosses the third boundary (segment
-// clipping). C is a closed loop: every solution on it is found, exact up to rounding; no
-// iterations beyond the start. A kept position touches each body within kContactTol of the
-// smaller circumscribed radius (checked on the exact face planes).
+// boundaries (paper: "walk the intersection curve of two wrappers"): starts on C (damped Newton
+// steps on the two piecewise-linear gap functions from points where equivalent spheres touch the
+// two bodies), then along C face pair by face pair (each piece a segment on a face of each: the
+// next face is where the segment leaves one), and on each segment the points where it crosses
+// the third boundary (segment clipping). C is made of closed loops, each walked once: every
+// isolated solution on them is found, exact up to rounding; no iterations beyond the starts.
+// The front tries one (front particle, body) pair with many third bodies: C is walked once per
+// pair and mobile, and only the clipping is repeated. A kept position touches each body within
+// kContactTol of the smaller circumscribed radius (checked on the exact face planes).
 #include <span>
 
 #include "contact/contact_solver.hpp"

@@ -73,7 +73,10 @@ ShapeValidation validate_shapes(const ShapePacking<D>& packing, const Container<
       ++v.pairs_checked;
       const double g = np.gap(P[static_cast<std::size_t>(j)], p).value;
       const double scale = std::min(r, rj);
-      if (std::abs(g) <= tolerance * scale) ++v.contacts;
+      if (std::abs(g) <= tolerance * scale) {
+        ++v.contacts;
+        v.max_contact_gap_rel = std::max(v.max_contact_gap_rel, std::abs(g) / scale);
+      }
       if (-g / scale > v.max_overlap_rel) {
         v.max_overlap_rel = -g / scale;
         v.worst_a = j;

@@ -27,6 +27,8 @@ struct ShapeValidation {
   std::uint64_t outside = 0;       ///< particles reaching beyond the container by more than the tolerance
   double max_outside_rel = 0;      ///< largest protrusion / circumscribed radius
   std::uint64_t contacts = 0;      ///< particle pairs with |gap| <= tolerance
+  double max_contact_gap_rel = 0;  ///< largest |gap| / smaller circumscribed radius among those contacts
+                                   ///< (how exactly the solvers made them touch)
   std::uint64_t wall_contacts = 0; ///< particles within the tolerance of the boundary
   double mean_coordination = 0;    ///< 2 contacts / N
   bool empty = false;              ///< no particle at all: a failure

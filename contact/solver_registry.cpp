@@ -15,8 +15,9 @@
 namespace fp {
 
 template <int D>
-SolverRegistry<D>::SolverRegistry(const NarrowPhase<D>& narrow_phase, const MinimisationOptions& options)
+SolverRegistry<D>::SolverRegistry(const NarrowPhase<D>& narrow_phase, const MinimisationOptions& options, bool closed_form)
     : default_(std::make_shared<MinimisationSolver<D>>(narrow_phase, options)) {
+  if (!closed_form) return;
   if constexpr (D == 2) {  // rounded convex cores: disks, stadiums, polygons, clusters
     const char* cores[] = {SphereShape<2>::kKind, SpherocylinderShape<2>::kKind, ConvexPolytopeShape<2>::kKind, ClusterShape<2>::kKind};
     auto wrapper = std::make_shared<PolygonWrapperSolver>();

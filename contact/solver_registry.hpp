@@ -34,7 +34,8 @@ class SolverRegistry {
   /// The default registry: minimisation everywhere; in 2D the polygon wrapper for rounded convex
   /// cores; the ball wrapper for spheres, clusters and walls; the analytic sphere solver for
   /// spheres and walls.
-  SolverRegistry(const NarrowPhase<D>& narrow_phase, const MinimisationOptions& options);
+  /// With `closed_form` false, minimisation for every problem (no solver registered).
+  SolverRegistry(const NarrowPhase<D>& narrow_phase, const MinimisationOptions& options, bool closed_form = true);
 
   void set_default(std::shared_ptr<const ContactSolver<D>> solver) { default_ = std::move(solver); }
   /// Registers `solver` for (fixed_kind, mobile_kind); it takes precedence over those registered

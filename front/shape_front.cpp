@@ -25,7 +25,7 @@ class ShapeFront {
   ShapeFront(const Container<D>& container, const std::vector<ShapeTemplate<D>>& templates, const PackerOptions& options,
              const StopCriteria& stop, std::uint64_t seed)
       : container_(container), templates_(templates), opt_(options), stop_(stop), rng_(seed),
-        registry_(np_, options.minimisation), containment_(container, np_),
+        registry_(np_, options.minimisation, options.contact_solver == ContactSolverChoice::Auto), containment_(container, np_),
         r_min_(min_bounding(templates)), r_max_(max_bounding(templates)),
         grid_(grid_domain(container, r_max_), r_min_, r_max_, options.grid_cell_factor, options.hierarchical_grid_ratio) {
     if (templates_.empty()) throw std::invalid_argument("pack_shapes: no particle templates");

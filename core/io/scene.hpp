@@ -37,6 +37,11 @@ struct MinimisationOptions {
   bool polish = true;           ///< finish with Newton steps on ω_i(x) = 0 (gradients needed)
 };
 
+/// Which contact solvers place non-spherical particles: the closed-form ones (wrappers, analytic
+/// spheres) where they reach and minimisation elsewhere, or minimisation for every problem (the
+/// paper's Sect. 3.2 method alone; for comparisons).
+enum class ContactSolverChoice { Auto, Minimisation };
+
 struct PackerOptions {
   std::string method = "front";              ///< the advancing front (the only method of this issue)
   FrontPick front_pick = FrontPick::ClosestToSeed;
@@ -55,6 +60,7 @@ struct PackerOptions {
   double hierarchical_grid_ratio = 4.0;      ///< use the hierarchical grid when r_max / r_min exceeds this
   std::optional<std::vector<double>> seed_point;  ///< where growth starts (default: container interior point)
   MinimisationOptions minimisation;          ///< non-spherical particles only
+  ContactSolverChoice contact_solver = ContactSolverChoice::Auto;  ///< non-spherical particles only
 };
 
 struct StopCriteria {

@@ -537,7 +537,13 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
                   std::map<std::string, SourceSpot>& spots) {
   const Map m = v.map();
   m.check_known({"method", "front", "candidate", "pair_order", "contact_bodies", "probe_smallest", "walls", "radius_pool", "contact_tolerance",
-                 "grid_cell_factor", "hierarchical_grid_ratio", "seed_point", "minimisation"});
+                 "grid_cell_factor", "hierarchical_grid_ratio", "seed_point", "minimisation", "contact_solver"});
+  if (auto x = m.find("contact_solver")) {
+    if (!shapes)
+      x->fail("used by particle templates only; this scene has spheres ('particles: {radius: ...}'), whose contacts are "
+              "always solved in closed form");
+    p.contact_solver = x->choice({"auto", "minimisation"}) == "auto" ? ContactSolverChoice::Auto : ContactSolverChoice::Minimisation;
+  }
   if (auto x = m.find("minimisation")) {
     if (!shapes)
       x->fail("used by particle templates only ('particles: [{shape: ..., size: ...}]'); this scene has spheres "

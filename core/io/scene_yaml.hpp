@@ -45,6 +45,7 @@
 //     pair_order: nearest | index;  contact_bodies: front | all;  probe_smallest: auto | bool;  walls: bool;  radius_pool: integer 1..1024;
 //     contact_tolerance: in (0, 1e-3);  grid_cell_factor: >= 1;  hierarchical_grid_ratio: > 1;
 //     seed_point: [x, y(, z)] inside the container
+//     contact_solver (particle templates only): auto | minimisation
 //     minimisation (particle templates only; MinimisationOptions):
 //       algorithm: newton | slsqp | lbfgs | nelder-mead | cobyla | sbplx;  gap_tolerance: in (0, 0.1);
 //       max_evaluations: integer >= 10;  polish: bool

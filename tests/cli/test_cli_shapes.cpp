@@ -138,6 +138,40 @@ TEST_P(CliShapes, OnlyClosestFrontPick) {
   EXPECT_EQ(listing(dir.work()), before);
 }
 
+// packer.contact_solver: minimisation places every particle by minimisation (no closed-form
+// solve), auto uses the wrappers (2D capsules: every solve); both packings validate, and the
+// wrappers' contacts are exact to rounding where the minimisation's stop at its tolerance.
+TEST(CliShapesSolver, ContactSolverChoice) {
+  const std::string cases[][2] = {{"auto", "assert c['minimisations'] == 0 and c['analytic_solves'] == c['solves'] > 0, c; "
+                                           "assert d['metrics']['max_contact_gap_over_rmin'] < 1e-12, d['metrics']"},
+                                  {"minimisation", "assert c['analytic_solves'] == 0 and c['minimisations'] > 0, c; "
+                                                   "assert d['metrics']['max_contact_gap_over_rmin'] < 1e-6, d['metrics']"}};
+  for (const auto& [solver, check] : cases) {
+    TempDir dir;
+    fs::create_directories(dir.work() / "out");
+    write_bytes(dir.work() / "caps.yaml", capsule_scene(2, 15) + "packer: {contact_solver: " + solver + "}\n");
+    const RunResult r = run_frontpack(dir, "pack caps.yaml -o out/caps.csv --record out/rec.json");
+    ASSERT_EQ(r.exit_code, 0) << solver << ": " << r.err;
+    EXPECT_NE(r.out.find("validation     ok"), std::string::npos) << r.out;
+    EXPECT_EQ(python("import json,sys; d=json.load(open(sys.argv[1])); c=d['counters']; " + check +
+                         "; assert d['info']['contact_solver'] == '" + solver + "'",
+                     dir.work() / "out/rec.json"),
+              0)
+        << solver;
+  }
+}
+
+TEST(CliShapesSolver, ContactSolverIsForParticleTemplatesOnly) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml",
+              "dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [1, 1, 1]}\n"
+              "particles: {radius: {distribution: uniform, min: 0.1, max: 0.2}}\npacker: {contact_solver: minimisation}\n");
+  const RunResult r = run_frontpack(dir, "pack s.yaml -o out.csv");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("key 'packer.contact_solver'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("particle templates only"), std::string::npos) << r.err;
+}
+
 INSTANTIATE_TEST_SUITE_P(Dimensions, CliShapes, ::testing::Values(2, 3),
                          [](const auto& info) { return std::to_string(info.param) + "D"; });
 
