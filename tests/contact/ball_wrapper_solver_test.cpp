@@ -212,34 +212,9 @@ TEST(BallWrapperSolver, SameAsBruteForce3D) { brute_force_round<3>(100, 8100); }
 
 template <int D>
 void minimisation_round(int trials, std::uint64_t seed) {
-  NarrowPhase<D> np;
   const BallWrapperSolver<D> wrapper;
-  MinimisationOptions opt;
-  const MinimisationSolver<D> minimisation(np, opt);
-  Rng rng(seed);
-  int built = 0, by_minimisation = 0, by_wrapper = 0, shared = 0;
-  for (int trial = 0; trial < trials; ++trial) {
-    Problem<D> pb;
-    std::array<Kind, D> kinds;
-    kinds.fill(Kind::Cluster);
-    if (!construct_problem<D>(pb, np, Kind::Cluster, kinds, Sizes{}, rng)) continue;
-    ++built;
-    Out<D> w, m;
-    const int nw = wrapper.solve(pb.span(), pb.mobile(), w);
-    const int nm = minimisation.solve(pb.span(), pb.mobile(), m);
-    by_wrapper += nw, by_minimisation += nm;
-    for (int k = 0; k < nm; ++k) {
-      const auto [q, dist] = closest<D>(first<D>(w, nw), m[k].position);
-      // Minimisation stops at gap_tolerance (1e-6 of the size): its positions are that close.
-      const bool found = dist <= 1e-5 * pb.mobile_shape->bounding_radius();
-      shared += found;
-      EXPECT_TRUE(found) << "trial " << trial << ": minimisation position " << vec_literal<D>(m[k].position)
-                         << " is not a wrapper position" << pb.literal();
-    }
-  }
-  std::printf("  %dD cluster x%d: %d problems; minimisation %d positions, all %d among the wrapper's %d\n", D, D + 1, built,
-              by_minimisation, shared, by_wrapper);
-  EXPECT_GE(by_wrapper, by_minimisation);
+  const KindDraw<D> clusters = [](Rng&, Kind& mobile, std::array<Kind, D>& fixed) { mobile = Kind::Cluster, fixed.fill(Kind::Cluster); };
+  EXPECT_EQ(missed_minimisation_positions<D>(wrapper, "cluster | clusters", clusters, trials, seed), 0);
 }
 
 TEST(BallWrapperSolver, FindsEveryPositionOfTheMinimisation2D) { minimisation_round<2>(60, 7200); }
@@ -313,28 +288,10 @@ TEST(BallWrapperSolver, SizeRatioOneToHundred) {
 
 template <int D>
 void offset_round(std::uint64_t seed) {
-  NarrowPhase<D> np;
-  const BallWrapperSolver<D> solver;
-  Rng rng(seed);
-  int compared = 0;
-  for (int trial = 0; trial < 30; ++trial) {
-    Problem<D> pb;
-    std::array<Kind, D> kinds;
-    kinds.fill(Kind::Cluster);
-    kinds[0] = Kind::Plane;
-    if (!construct_problem<D>(pb, np, Kind::Cluster, kinds, Sizes{}, rng)) continue;
-    const Vec<D> shift = Vec<D>::Constant(1e6);
-    const Problem<D> far = pb.translated(shift);
-    Out<D> a, b;
-    const int na = solver.solve(pb.span(), pb.mobile(), a);
-    const int nb = solver.solve(far.span(), far.mobile(), b);
-    EXPECT_TRUE(check_placements<D>(far, first<D>(b, nb), kTol)) << "trial " << trial;
-    ASSERT_EQ(na, nb) << "trial " << trial << far.literal();
-    for (int k = 0; k < na; ++k)  // the same positions, moved: to the spacing of doubles at 1e6
-      EXPECT_LE(closest<D>(first<D>(b, nb), a[k].position + shift).second, 1e-9 * pb.mobile_shape->bounding_radius() + 1e-9);
-    ++compared;
-  }
-  EXPECT_GE(compared, 27);
+  std::array<Kind, D> kinds;
+  kinds.fill(Kind::Cluster);
+  kinds[0] = Kind::Plane;
+  expect_same_when_shifted<D>(BallWrapperSolver<D>(), Kind::Cluster, kinds, kTol, seed);
 }
 
 TEST(BallWrapperSolver, CoordinatesOffsetByAMillion2D) { offset_round<2>(7500); }

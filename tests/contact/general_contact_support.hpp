@@ -1261,4 +1261,74 @@ void print_tally(const char* name, const Tally& t) {
               D, name, t.built, t.with_solution, t.solutions, 100 * t.known_recall(), t.known_on_stretch, t.known_inexact, t.worst);
 }
 
+/// Kinds of a constructed problem, drawn per trial (a closed-form solver's tests draw from the
+/// kinds it takes).
+template <int D>
+using KindDraw = std::function<void(Rng&, Kind& mobile, std::array<Kind, D>& fixed)>;
+
+/// A closed-form solver against the minimisation on `trials` constructed problems: every position
+/// the minimisation returns must be one of the solver's, within 1e-3 of the size (the
+/// minimisation stops at gaps of 1e-6 of the size: where the wrappers cross at a grazing angle its
+/// position lies up to ~1e-6 / sin(angle) away). Returns how many were not (printed); and the
+/// closed-form solver must find at least as many positions in all.
+template <int D>
+int missed_minimisation_positions(const ContactSolver<D>& solver, const char* name, const KindDraw<D>& kinds, int trials,
+                                  std::uint64_t seed) {
+  NarrowPhase<D> np;
+  const MinimisationSolver<D> minimisation(np, MinimisationOptions{});
+  Rng rng(seed);
+  int built = 0, by_solver = 0, by_minimisation = 0, missed = 0;
+  for (int trial = 0; trial < trials; ++trial) {
+    Problem<D> pb;
+    Kind mobile;
+    std::array<Kind, D> fixed;
+    kinds(rng, mobile, fixed);
+    if (!construct_problem<D>(pb, np, mobile, fixed, Sizes{}, rng)) continue;
+    ++built;
+    std::array<Placement<D>, ContactSolver<D>::kMaxCandidates> w, m;
+    const int nw = solver.solve(pb.span(), pb.mobile(), w);
+    const int nm = minimisation.solve(pb.span(), pb.mobile(), m);
+    by_solver += nw, by_minimisation += nm;
+    const std::span<const Placement<D>> got(w.data(), static_cast<std::size_t>(nw));
+    for (int k = 0; k < nm; ++k)
+      if (closest<D>(got, m[k].position).second > 1e-3 * pb.mobile_shape->bounding_radius()) {
+        ++missed;
+        std::printf("  %s trial %d: minimisation position %s is none of the solver's%s", name, trial,
+                    vec_literal<D>(m[k].position).c_str(), pb.literal().c_str());
+      }
+  }
+  std::printf("  %dD %s: %d problems; minimisation %d positions, the solver %d; %d minimisation positions not among them\n", D,
+              name, built, by_minimisation, by_solver, missed);
+  EXPECT_GE(built, trials * 9 / 10) << name;
+  EXPECT_GE(by_solver, by_minimisation) << name;
+  return missed;
+}
+
+/// The same problems shifted by 1e6 on every axis: the solver returns as many positions, valid
+/// to `tol`, the same ones shifted (up to the rounding of the inputs at 1e6, 1.2e-10, amplified by
+/// grazing crossings: within 1e-7 of the size).
+template <int D>
+void expect_same_when_shifted(const ContactSolver<D>& solver, Kind mobile, const std::array<Kind, D>& fixed, double tol,
+                              std::uint64_t seed) {
+  NarrowPhase<D> np;
+  Rng rng(seed);
+  int compared = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    Problem<D> pb;
+    if (!construct_problem<D>(pb, np, mobile, fixed, Sizes{}, rng)) continue;
+    const Vec<D> shift = Vec<D>::Constant(1e6);
+    const Problem<D> far = pb.translated(shift);
+    std::array<Placement<D>, ContactSolver<D>::kMaxCandidates> a, b;
+    const int na = solver.solve(pb.span(), pb.mobile(), a);
+    const int nb = solver.solve(far.span(), far.mobile(), b);
+    const std::span<const Placement<D>> shifted(b.data(), static_cast<std::size_t>(nb));
+    EXPECT_TRUE(check_placements<D>(far, shifted, tol)) << "trial " << trial;
+    ASSERT_EQ(na, nb) << "trial " << trial << far.literal();
+    for (int k = 0; k < na; ++k)
+      EXPECT_LE(closest<D>(shifted, a[k].position + shift).second, 1e-7 * pb.mobile_shape->bounding_radius()) << "trial " << trial;
+    ++compared;
+  }
+  EXPECT_GE(compared, 27);
+}
+
 }  // namespace fp::general_test

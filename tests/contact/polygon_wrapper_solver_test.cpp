@@ -101,28 +101,12 @@ TEST(PolygonWrapperSolver, FindsEveryBruteForceSolutionAndNothingElse) {
 // ================================================================ 3. against the minimisation
 
 TEST(PolygonWrapperSolver, FindsEveryPositionOfTheMinimisation) {
-  NarrowPhase<2> np;
-  const PolygonWrapperSolver wrapper;
-  const MinimisationSolver<2> minimisation(np, MinimisationOptions{});
-  Rng rng(9200);
-  const Kind kinds[] = {Kind::Polytope, Kind::Capsule, Kind::Sphere, Kind::Cluster};
-  int built = 0, by_wrapper = 0, by_minimisation = 0;
-  for (int trial = 0; trial < 80; ++trial) {
-    Problem<2> pb;
-    if (!construct_problem<2>(pb, np, kinds[rng.below(4)], {kinds[rng.below(4)], kinds[rng.below(4)]}, Sizes{}, rng)) continue;
-    ++built;
-    Out w, m;
-    const int nw = wrapper.solve(pb.span(), pb.mobile(), w);
-    const int nm = minimisation.solve(pb.span(), pb.mobile(), m);
-    by_wrapper += nw, by_minimisation += nm;
-    // The minimisation stops at gaps of 1e-6 of the size: where the contours cross at a grazing
-    // angle its position lies up to ~1e-6 / sin(angle) away (the brute-force test's 1e-3).
-    for (int k = 0; k < nm; ++k)
-      EXPECT_LE(closest<2>(first(w, nw), m[k].position).second, 1e-3 * pb.mobile_shape->bounding_radius())
-          << "trial " << trial << ": minimisation position " << vec_literal<2>(m[k].position) << " not found" << pb.literal();
-  }
-  std::printf("  %d problems: minimisation %d positions, wrapper %d\n", built, by_minimisation, by_wrapper);
-  EXPECT_GE(by_wrapper, by_minimisation);
+  const KindDraw<2> any = [](Rng& rng, Kind& mobile, std::array<Kind, 2>& fixed) {
+    const Kind kinds[] = {Kind::Polytope, Kind::Capsule, Kind::Sphere, Kind::Cluster};
+    mobile = kinds[rng.below(4)];
+    for (Kind& k : fixed) k = kinds[rng.below(4)];
+  };
+  EXPECT_EQ(missed_minimisation_positions<2>(PolygonWrapperSolver(), "rounded cores", any, 80, 9200), 0);
 }
 
 // ============================================================= 4. failures and extremes
@@ -159,27 +143,7 @@ TEST(PolygonWrapperSolver, ThinCapsulesAndSizeRatioOneToHundred) {
 }
 
 TEST(PolygonWrapperSolver, CoordinatesOffsetByAMillion) {
-  NarrowPhase<2> np;
-  const PolygonWrapperSolver solver;
-  Rng rng(9500);
-  int compared = 0;
-  for (int trial = 0; trial < 30; ++trial) {
-    Problem<2> pb;
-    if (!construct_problem<2>(pb, np, Kind::Polytope, {Kind::Polytope, Kind::Plane}, Sizes{}, rng)) continue;
-    const Vec2 shift = Vec2::Constant(1e6);
-    const Problem<2> far = pb.translated(shift);
-    Out a, b;
-    const int na = solver.solve(pb.span(), pb.mobile(), a);
-    const int nb = solver.solve(far.span(), far.mobile(), b);
-    EXPECT_TRUE(check_placements<2>(far, first(b, nb), kTol)) << "trial " << trial;
-    ASSERT_EQ(na, nb) << "trial " << trial << far.literal();
-    // The same positions, moved, up to the rounding of the inputs at 1e6 (1.2e-10) amplified by
-    // grazing crossings.
-    for (int k = 0; k < na; ++k)
-      EXPECT_LE(closest<2>(first(b, nb), a[k].position + shift).second, 1e-7 * pb.mobile_shape->bounding_radius());
-    ++compared;
-  }
-  EXPECT_GE(compared, 27);
+  expect_same_when_shifted<2>(PolygonWrapperSolver(), Kind::Polytope, {Kind::Polytope, Kind::Plane}, kTol, 9500);
 }
 
 // Squares side by side, their edges parallel to 1e-9 rad, a square dropped onto both: the

@@ -138,31 +138,10 @@ TEST(PolytopeWrapperSolver, SameAsAnIndependentBruteForce) {
 // ================================================================ 3. against the minimisation
 
 TEST(PolytopeWrapperSolver, FindsEveryPositionOfTheMinimisation) {
-  NarrowPhase<3> np;
-  const PolytopeWrapperSolver wrapper;
-  const MinimisationSolver<3> minimisation(np, MinimisationOptions{});
-  Rng rng(9800);
-  int built = 0, by_wrapper = 0, by_minimisation = 0, missed = 0;
-  for (int trial = 0; trial < 60; ++trial) {
-    Problem<3> pb;
-    if (!construct_problem<3>(pb, np, Kind::Polytope, {Kind::Polytope, Kind::Polytope, Kind::Polytope}, Sizes{}, rng)) continue;
-    ++built;
-    Out w, m;
-    const int nw = wrapper.solve(pb.span(), pb.mobile(), w);
-    const int nm = minimisation.solve(pb.span(), pb.mobile(), m);
-    by_wrapper += nw, by_minimisation += nm;
-    for (int k = 0; k < nm; ++k)  // the minimisation stops at gaps of 1e-6: up to ~1e-3 away at grazing angles
-      if (closest<3>(first(w, nw), m[k].position).second > 1e-3 * pb.mobile_shape->bounding_radius()) {
-        ++missed;
-        std::printf("  trial %d: minimisation position %s is no wrapper position (a continuum?)\n", trial,
-                    vec_literal<3>(m[k].position).c_str());
-      }
-  }
-  std::printf("  %d problems: minimisation %d positions, wrapper %d; %d minimisation positions not among the wrapper's\n",
-              built, by_minimisation, by_wrapper, missed);
-  // Measured: 3 of 109, in flush configurations (a continuum of positions, see above).
-  EXPECT_LE(missed, by_minimisation / 20);
-  EXPECT_GE(by_wrapper, by_minimisation);
+  const KindDraw<3> polyhedra = [](Rng&, Kind& mobile, std::array<Kind, 3>& fixed) { mobile = Kind::Polytope, fixed.fill(Kind::Polytope); };
+  const int missed = missed_minimisation_positions<3>(PolytopeWrapperSolver(), "polyhedra", polyhedra, 60, 9800);
+  // Measured: 2 of 109, in flush configurations (a continuum of positions: the mobile can slide).
+  EXPECT_LE(missed, 5);
 }
 
 // ============================================================= 4. failures and extremes
@@ -202,25 +181,7 @@ TEST(PolytopeWrapperSolver, SizeRatioOneToHundred) {
 }
 
 TEST(PolytopeWrapperSolver, CoordinatesOffsetByAMillion) {
-  NarrowPhase<3> np;
-  const PolytopeWrapperSolver solver;
-  Rng rng(9920);
-  int compared = 0;
-  for (int trial = 0; trial < 30; ++trial) {
-    Problem<3> pb;
-    if (!construct_problem<3>(pb, np, Kind::Polytope, {Kind::Polytope, Kind::Polytope, Kind::Plane}, Sizes{}, rng)) continue;
-    const Vec3 shift = Vec3::Constant(1e6);
-    const Problem<3> far = pb.translated(shift);
-    Out a, b;
-    const int na = solver.solve(pb.span(), pb.mobile(), a);
-    const int nb = solver.solve(far.span(), far.mobile(), b);
-    EXPECT_TRUE(check_placements<3>(far, first(b, nb), kTol)) << "trial " << trial;
-    ASSERT_EQ(na, nb) << "trial " << trial << far.literal();
-    for (int k = 0; k < na; ++k)
-      EXPECT_LE(closest<3>(first(b, nb), a[k].position + shift).second, 1e-7 * pb.mobile_shape->bounding_radius());
-    ++compared;
-  }
-  EXPECT_GE(compared, 27);
+  expect_same_when_shifted<3>(PolytopeWrapperSolver(), Kind::Polytope, {Kind::Polytope, Kind::Polytope, Kind::Plane}, kTol, 9920);
 }
 
 // Three cubes in a corner arrangement and a cube dropped onto them, faces parallel to within
