@@ -398,9 +398,8 @@ ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx, const std::optional
                    "reading mesh '" + resolved + "'");
 }
 
-/// The container; in the frame of `origin` when given, else in its own (local_frame.hpp).
 template <int D>
-ContainerPtr<D> parse_container(const Value& v, const Context& ctx, const std::optional<Vec<D>>& origin = std::nullopt) {
+ContainerPtr<D> parse_container_of_its_type(const Value& v, const Context& ctx, const std::optional<Vec<D>>& origin) {
   const Map m = v.map();
   m.check_known(kContainerKeys);
   const Keys& mine = D == 3 ? kContainerTypes3 : kContainerTypes2;
@@ -423,6 +422,18 @@ ContainerPtr<D> parse_container(const Value& v, const Context& ctx, const std::o
     if (type == "disk") return parse_ball<2>(m, origin);
     return parse_polygon(m, origin);
   }
+}
+
+/// The container; in the frame of `origin` when given, else in its own (local_frame.hpp).
+template <int D>
+ContainerPtr<D> parse_container(const Value& v, const Context& ctx, const std::optional<Vec<D>>& origin = std::nullopt) {
+  ContainerPtr<D> container = parse_container_of_its_type<D>(v, ctx, origin);
+  // Finite bounds can still hold a volume beyond the doubles (a box 1e308 tall): every volume
+  // fraction would be 0 and a volume_fraction stop never reached.
+  if (!std::isfinite(container->measure()))
+    v.fail(std::string("the container is too large: its ") + (D == 3 ? "volume" : "area") + " is beyond the largest double (" +
+           container->describe() + ")");
+  return container;
 }
 
 // --- radius distributions ----------------------------------------------------------------
