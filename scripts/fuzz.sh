@@ -46,7 +46,7 @@ for t in "${targets[@]}"; do
   replay=(tests/fuzz/corpus/$t)
   [[ -d tests/fuzz/regressions/$t ]] && replay+=(tests/fuzz/regressions/$t)
   echo "== fuzz_$t: replaying ${replay[*]}"
-  "$binary" -runs=0 -timeout=10 "${replay[@]}" >build-fuzz/replay-$t.log 2>&1 || {
+  "$binary" -runs=0 -timeout=10 -artifact_prefix="$findings/" "${replay[@]}" >build-fuzz/replay-$t.log 2>&1 || {
     tail -30 build-fuzz/replay-$t.log; echo "fuzz_$t: a seed or a regression fails (log: build-fuzz/replay-$t.log)" >&2; exit 1; }
   echo "== fuzz_$t: fuzzing for $seconds s (log: build-fuzz/fuzz-$t.log)"
   # Inputs of at most 64 KiB, 10 s each; one allocation beyond 256 MiB is a finding, as in
