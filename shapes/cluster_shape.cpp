@@ -114,19 +114,30 @@ ShapePrototype<D> cluster_prototype(const ShapeParameters& p) {
   if (radii.size() != centers.size())
     r.fail("radii", "has " + std::to_string(radii.size()) + " radii for " + std::to_string(centers.size()) +
                         " centres (one radius per centre)");
+  // The cluster is rescaled to circumscribed radius 1 anyway: scale the input first, by a power of
+  // two (exact), so that r^D cannot overflow (radii: [1e308] made the centroid nan and the
+  // measure's quadrature never ended).
+  double largest = 0.0;
+  for (std::size_t i = 0; i < centers.size(); ++i) {
+    largest = std::max(largest, std::abs(radii[i]));
+    for (int k = 0; k < D; ++k) largest = std::max(largest, std::abs(centers[i][k]));
+  }
+  const double unit = largest > 0 && std::isfinite(largest) ? std::ldexp(1.0, -std::ilogb(largest)) : 1.0;
   std::vector<Ball<D>> members;
   Vec<D> centroid = Vec<D>::Zero();
   double weight = 0.0;
   for (std::size_t i = 0; i < centers.size(); ++i) {
     if (!(radii[i] > 0)) r.fail("radii", "radius " + std::to_string(i) + " must be positive (got " + json_number(radii[i]) + ")");
     Ball<D> b;
-    for (int k = 0; k < D; ++k) b.center[k] = centers[i][k];
-    b.radius = radii[i];
+    for (int k = 0; k < D; ++k) b.center[k] = unit * centers[i][k];
+    b.radius = unit * radii[i];
     members.push_back(b);
     const double w = std::pow(b.radius, D);  // the member's own measure, up to a constant
     centroid += w * b.center;
     weight += w;
   }
+  if (!(weight > 0))  // every r^D underflowed: radii below ~1e-100 of the largest coordinate
+    r.fail("radii", "every radius is negligible against the distances between the centres");
   centroid /= weight;
   double circumscribed = 0.0;
   for (Ball<D>& b : members) {

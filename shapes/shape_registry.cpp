@@ -1,5 +1,7 @@
 #include "shapes/shape_registry.hpp"
 
+#include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "shapes/shape_parameters.hpp"
@@ -60,6 +62,17 @@ ShapePrototype<D> ShapeFamilies::prototype(const ParticleTemplateSpec& spec) con
     for (const auto& [name, value] : proto.dimensions) dims.push_back(name);
     reader.fail("size_on", "shape '" + spec.family + "' has no dimension '" + spec.size_on + "' (its dimensions: " +
                                listed(dims) + ")");
+  }
+  // Proportions beyond what a double resolves (axes: [1e228, 0.5, 0.25]) leave a shape of no
+  // measure, or a dimension of 0, at circumscribed radius 1: nothing could be sized or packed.
+  const double measure = proto.shape->measure(), dimension = proto.dimensions.at(spec.size_on);
+  if (!(measure > 0) || !std::isfinite(measure) || !(dimension > 0) || !std::isfinite(dimension)) {
+    std::ostringstream os;
+    os.precision(6);
+    os << "shape '" << spec.family << "' is degenerate with these parameters (at circumscribed radius 1 its "
+       << (D == 3 ? "volume" : "area") << " is " << measure << " and its " << spec.size_on << " " << dimension
+       << "): its proportions are too extreme";
+    reader.fail("shape", os.str());
   }
   return proto;
 }

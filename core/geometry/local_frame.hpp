@@ -35,6 +35,7 @@ Vec<D> frame_origin(const Aabb<D>& bounds) {
   int e = 0;
   std::frexp(extent, &e);                  // extent < 2^e
   const double q = std::ldexp(1.0, e + 1); // >= 2 * extent
+  if (!std::isfinite(q)) return origin;    // extent >= 2^1022: q overflows, 0 is its only multiple (inf * 0 is nan)
   for (int a = 0; a < D; ++a) {
     // 0.5 lo + 0.5 hi: no overflow for bounds near the largest doubles.
     const double c = 0.5 * bounds.lo[a] + 0.5 * bounds.hi[a];
@@ -50,6 +51,7 @@ Vec<D> seed_frame_origin(const Vec<D>& seed, double r_max) {
   int e = 0;
   std::frexp(r_max, &e);
   const double q = std::ldexp(1.0, e + 1);
+  if (!std::isfinite(q)) return Vec<D>::Zero();  // r_max >= 2^1022, as in frame_origin
   Vec<D> origin;
   for (int a = 0; a < D; ++a) origin[a] = q * std::round(seed[a] / q);
   return origin;

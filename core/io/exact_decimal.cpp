@@ -79,8 +79,16 @@ std::optional<ExactDecimal> ExactDecimal::parse(std::string_view s) {
     exponent += neg ? -e : e;
   }
   if (i != s.size()) return std::nullopt;
-  // Far beyond any double (1e±400 with a few thousand digits at most): saturate, to_double() says inf/0.
-  exponent = std::clamp<long long>(exponent, INT_MIN / 4, INT_MAX / 4);
+  // Far beyond the doubles only the class of the value matters: above 10^1000 it reads as inf and
+  // below 10^-1100 as 0 (far under half the spacing of any double), whatever origin is subtracted.
+  // Saturating there keeps the digit strings of +, - and to_double() as short as the text: an
+  // exponent of 999999999 kept as is would be aligned to half a billion zeros.
+  const std::size_t first = d.digits.find_first_not_of('0');
+  if (first != std::string::npos) {
+    const long long magnitude = exponent + static_cast<long long>(d.digits.size() - first);  // |value| < 10^magnitude
+    if (magnitude > 1000) d.digits = "1", exponent = 1000;
+    else if (magnitude < -1100) d.digits = "1", exponent = -1100;
+  }
   d.exponent = static_cast<int>(exponent);
   normalise(d);
   return d;

@@ -122,7 +122,8 @@ class ById {
     const std::int64_t n = static_cast<std::int64_t>(rows_.size());
     std::vector<int> slot(rows_.size(), -1);
     for (std::size_t k = 0; k < rows_.size(); ++k) {
-      const std::int64_t i = rows_[k].id - first_;
+      // The id is compared with first_ before subtracting it: INT64_MIN - 1 overflows.
+      const std::int64_t i = rows_[k].id < first_ ? -1 : rows_[k].id - first_;
       auto fail = [&](const std::string& why) {
         throw std::runtime_error(path + ":" + std::to_string(rows_[k].line) + ": " + why);
       };

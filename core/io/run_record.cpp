@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <cmath>
 #include <stdexcept>
+#include <string_view>
 
 #include "core/io/atomic_file.hpp"
 #include "core/io/exact_decimal.hpp"
@@ -90,12 +91,19 @@ void write_run_record(const std::string& path, const RunRecord& record) {
 
 namespace {
 
+/// nlohmann's message without its "[json.exception.parse_error.101] " prefix (an internal id).
+std::string json_error_text(const char* what) {
+  const std::string_view s(what);
+  const std::size_t close = s.find("] ");
+  return std::string(s.starts_with("[json.exception.") && close != std::string_view::npos ? s.substr(close + 2) : s);
+}
+
 Json parse_record(const std::string& text, const std::string& source_name, int& dimension) {
   Json j;
   try {
     j = Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    throw std::runtime_error(source_name + ": invalid JSON: " + e.what());
+  } catch (const Json::exception& e) {  // a parse_error, or an out_of_range for a number beyond the doubles (1e999)
+    throw std::runtime_error(source_name + ": invalid JSON: " + json_error_text(e.what()));
   }
   if (!j.is_object()) throw std::runtime_error(source_name + ": not a frontpack run record (top level is not an object)");
   if (!j.contains("dimension") || !j["dimension"].is_number_integer())

@@ -283,6 +283,17 @@ class Map {
 
 Map Value::map() const { return Map(*ctx_, node_, path_, mark_); }
 
+/// A constructor's message without the C++ class it starts with ("LognormalRadius: [min, max]
+/// = ..." -> "[min, max] = ..."): the error names the key instead.
+std::string without_class_name(const std::string& what) {
+  std::size_t i = 0;
+  while (i < what.size() && std::isalnum(static_cast<unsigned char>(what[i]))) ++i;
+  const bool class_name = i > 0 && std::isupper(static_cast<unsigned char>(what[0])) &&
+                          std::any_of(what.begin() + 1, what.begin() + static_cast<std::ptrdiff_t>(i),
+                                      [](unsigned char c) { return std::isupper(c); });
+  return class_name && what.compare(i, 2, ": ") == 0 ? what.substr(i + 2) : what;
+}
+
 // Runs a constructor; its std::invalid_argument (or any std::exception) becomes a SceneError
 // at `where`.
 template <typename F>
@@ -294,7 +305,7 @@ auto construct(const Map& where, F&& f, const std::string& doing = "building it"
   } catch (const std::bad_alloc&) {  // what() would only say "std::bad_alloc"
     where.fail("out of memory while " + doing);
   } catch (const std::exception& e) {
-    where.fail(e.what());
+    where.fail(without_class_name(e.what()));
   }
 }
 
@@ -398,9 +409,8 @@ ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx, const std::optional
                    "reading mesh '" + resolved + "'");
 }
 
-/// The container; in the frame of `origin` when given, else in its own (local_frame.hpp).
 template <int D>
-ContainerPtr<D> parse_container(const Value& v, const Context& ctx, const std::optional<Vec<D>>& origin = std::nullopt) {
+ContainerPtr<D> parse_container_of_its_type(const Value& v, const Context& ctx, const std::optional<Vec<D>>& origin) {
   const Map m = v.map();
   m.check_known(kContainerKeys);
   const Keys& mine = D == 3 ? kContainerTypes3 : kContainerTypes2;
@@ -423,6 +433,18 @@ ContainerPtr<D> parse_container(const Value& v, const Context& ctx, const std::o
     if (type == "disk") return parse_ball<2>(m, origin);
     return parse_polygon(m, origin);
   }
+}
+
+/// The container; in the frame of `origin` when given, else in its own (local_frame.hpp).
+template <int D>
+ContainerPtr<D> parse_container(const Value& v, const Context& ctx, const std::optional<Vec<D>>& origin = std::nullopt) {
+  ContainerPtr<D> container = parse_container_of_its_type<D>(v, ctx, origin);
+  // Finite bounds can still hold a volume beyond the doubles (a box 1e308 tall): every volume
+  // fraction would be 0 and a volume_fraction stop never reached.
+  if (!std::isfinite(container->measure()))
+    v.fail(std::string("the container is too large: its ") + (D == 3 ? "volume" : "area") + " is beyond the largest double (" +
+           container->describe() + ")");
+  return container;
 }
 
 // --- radius distributions ----------------------------------------------------------------

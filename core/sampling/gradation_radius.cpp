@@ -84,6 +84,8 @@ GradationRadius::GradationRadius(std::vector<std::pair<double, double>> diameter
   std::fill(count_cumulative_.begin() + static_cast<std::ptrdiff_t>(last), count_cumulative_.end(), 1.0);
   r_min_ = 0.5 * points_[first].first;
   r_max_ = 0.5 * points_[last + 1].first;
+  // A sieve of 4.9e-324 (the smallest double) has a radius of 0: no radius 0 may be drawn.
+  sampling_detail::require_positive(kWho, "half the smallest sieve with particles (the smallest radius)", r_min_);
   mean_ = std::clamp(0.5 * mean_d, r_min_, r_max_);
 }
 
