@@ -435,12 +435,28 @@ ContainerPtr<D> parse_container_of_its_type(const Value& v, const Context& ctx, 
   }
 }
 
+/// Lengths whose D-th powers (areas, volumes: the measures every figure is made of) are ordinary
+/// doubles, with room for the sums and ratios of the metrics: 1e-100 <= L <= 1e100. Packings are
+/// exact under scaling by a power of two (tests/front/test_front_far_and_scaled.cpp), so a scene
+/// beyond these bounds loses nothing by being stated in other units.
+void check_length(const Value& where, const std::string& what, double length, int dimension) {
+  if (length >= kMinLength && length <= kMaxLength) return;
+  std::ostringstream os;
+  os.precision(6);
+  os << what << " (" << length << ") is outside [" << kMinLength << ", " << kMaxLength << "]: " << (dimension == 3 ? "volumes" : "areas")
+     << " (its " << (dimension == 3 ? "cube" : "square") << ") would not be ordinary doubles; state the scene in other units "
+     << "(the packing is the same at any scale)";
+  where.fail(os.str());
+}
+
 /// The container; in the frame of `origin` when given, else in its own (local_frame.hpp).
 template <int D>
 ContainerPtr<D> parse_container(const Value& v, const Context& ctx, const std::optional<Vec<D>>& origin = std::nullopt) {
   ContainerPtr<D> container = parse_container_of_its_type<D>(v, ctx, origin);
-  // Finite bounds can still hold a volume beyond the doubles (a box 1e308 tall): every volume
-  // fraction would be 0 and a volume_fraction stop never reached.
+  check_length(v, "the container's extent", container->bounds().size().maxCoeff(), D);
+  // Within the length bounds the volume is finite; this guards a container whose measure is
+  // computed otherwise (a mesh's signed volume): every volume fraction would be 0 and a
+  // volume_fraction stop never reached.
   if (!std::isfinite(container->measure()))
     v.fail(std::string("the container is too large: its ") + (D == 3 ? "volume" : "area") + " is beyond the largest double (" +
            container->describe() + ")");
@@ -844,26 +860,11 @@ bool parse_particles(const Value& v, const Container<D>& container, Scene& scene
   return false;
 }
 
-/// Lengths whose D-th powers (areas, volumes: the measures every figure is made of) are ordinary
-/// doubles, with room for the sums and ratios of the metrics: 1e-100 <= L <= 1e100. Packings are
-/// exact under scaling by a power of two (tests/front/test_front_far_and_scaled.cpp), so a scene
-/// beyond these bounds loses nothing by being stated in other units.
-void check_length(const Value& where, const std::string& what, double length, int dimension) {
-  if (length >= kMinLength && length <= kMaxLength) return;
-  std::ostringstream os;
-  os.precision(6);
-  os << what << " (" << length << ") is outside [" << kMinLength << ", " << kMaxLength << "]: " << (dimension == 3 ? "volumes" : "areas")
-     << " (its " << (dimension == 3 ? "cube" : "square") << ") would not be ordinary doubles; state the scene in other units "
-     << "(the packing is the same at any scale)";
-  where.fail(os.str());
-}
-
 template <int D>
 void parse_body(const Map& root, Scene& scene, const Context& ctx) {
   const Value container_value = root.get("container", "the region to fill");
   scene.spots["container"] = container_value.spot();
   ContainerPtr<D> container = parse_container<D>(container_value, ctx);
-  check_length(container_value, "the container's extent", container->bounds().size().maxCoeff(), D);
   const Value particles_value = root.get("particles", kParticleForms);
   scene.spots["particles"] = particles_value.spot();
   const bool shapes = parse_particles<D>(particles_value, *container, scene);
