@@ -197,6 +197,9 @@ ShapePrototype<D> convex_polytope_prototype(const ShapeParameters& p) {
     const int n = std::abs(x) < 1e6 ? static_cast<int>(x) : 0;
     if constexpr (D == 2) {
       if (n != x || n < 3) r.fail(shortcut, "must be a whole number >= 3 (got " + json_number(x) + ")");
+      if (n > ConvexPolytopeShape<D>::kMaxTemplatePoints)
+        r.fail(shortcut, "at most " + std::to_string(ConvexPolytopeShape<D>::kMaxTemplatePoints) + " sides (got " +
+                             json_number(x) + "); a polygon that fine is a disk: shape: sphere");
       points = regular_polygon(n);
     } else {
       if (n == x) points = platonic_solid(n);
@@ -210,6 +213,9 @@ ShapePrototype<D> convex_polytope_prototype(const ShapeParameters& p) {
       for (int k = 0; k < D; ++k) v[k] = q[k];
       points.push_back(v);
     }
+    if (points.size() > static_cast<std::size_t>(ConvexPolytopeShape<D>::kMaxTemplatePoints))
+      r.fail("vertices", "at most " + std::to_string(ConvexPolytopeShape<D>::kMaxTemplatePoints) + " vertices (got " +
+                             std::to_string(points.size()) + ")");
   }
 
   auto hull = [&] {

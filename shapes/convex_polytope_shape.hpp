@@ -22,6 +22,10 @@ class ConvexPolytopeShape final : public Shape<D> {
   static ConvexPolytopeShape hull_of(const std::vector<Vec<D>>& points);
 
   static constexpr const char* kKind = D == 2 ? "polygon" : "polyhedron";
+  /// A particle template's largest number of points (sides, listed vertices): building the face
+  /// planes costs (vertices x faces), and every contact problem touches each face. Beyond a few
+  /// hundred sides a polygon is a disk to any packing anyway.
+  static constexpr int kMaxTemplatePoints = 10000;
   const std::vector<Vec<D>>& vertices() const { return vertices_; }
   const std::vector<std::array<int, D>>& facets() const { return facets_; }
   /// Centroid of the solid (the family puts the reference point there).

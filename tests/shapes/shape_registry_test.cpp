@@ -1,9 +1,12 @@
 // The family registry and the parameter reader: every family resolves in the dimensions it
 // exists in, and every bad template is a SceneError that names the file, line and key.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "core/io/scene_error.hpp"
 #include "shape_test_support.hpp"
+#include "shapes/convex_polytope_shape.hpp"
 #include "shapes/shape_parameters.hpp"
 
 namespace fp {
@@ -117,6 +120,21 @@ TEST(ShapeFamilies, BadShortcuts) {
             std::string::npos);
   EXPECT_NE(error_of<3>(make_spec("polyhedron", numbers({{"platonic", 7}}))).find("must be 4, 6, 8, 12 or 20"),
             std::string::npos);
+}
+
+// Found by tests/fuzz (a hang: 'sides: 155201' built its face planes in vertices x faces). The
+// largest accepted count is built, the next one refused.
+TEST(ShapeFamilies, TooManySidesOrVertices) {
+  constexpr int kMax = ConvexPolytopeShape<2>::kMaxTemplatePoints;
+  EXPECT_EQ(error_of<2>(make_spec("polygon", numbers({{"sides", kMax}}))), "");
+  EXPECT_NE(error_of<2>(make_spec("polygon", numbers({{"sides", kMax + 1}}))).find("key 'particles[0].sides': at most 10000 sides"),
+            std::string::npos);
+  ShapeParameters p;
+  for (int k = 0; k <= kMax; ++k) {
+    const double t = 2 * 3.141592653589793 * k / (kMax + 1);
+    p.point_lists["vertices"].push_back({std::cos(t), std::sin(t)});
+  }
+  EXPECT_NE(error_of<2>(make_spec("polygon", p)).find("at most 10000 vertices (got 10001)"), std::string::npos);
 }
 
 TEST(ShapeFamilies, BadClusters) {
