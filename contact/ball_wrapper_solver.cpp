@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "contact/sphere_contact_solver.hpp"
@@ -126,6 +129,110 @@ void append_live(const std::vector<Piece<D>>& pieces, int first, int last, int t
   }
 }
 
+/// 3D: one pair circle, piece a of a body against piece b of another, seen in a's frame (origin
+/// a's centre, unit = a's locus radius, so a's locus is |y| = 1): the circle |y| = 1, n.y = h.
+/// Only the part of it outside every other piece of the two bodies can carry a position; that
+/// part is kept as exposed angular intervals, so a third body's pieces are tried only there.
+struct Arc {
+  int a = 0, b = 0;     ///< the two pieces (names in LociCache::pieces)
+  Vec3 origin;          ///< a's centre (world)
+  double scale = 1.0;   ///< a's locus radius
+  Vec3 y1, u, v;        ///< the circle's centre and an orthonormal basis of its plane (frame)
+  double rho = 0.0;     ///< its radius (frame)
+  bool careful = false; ///< nearly a point (spheres almost tangent): every choice by the sphere solver
+  enum class Exposure { None, Intervals } exposure = Exposure::None;
+  int first = 0, count = 0;  ///< exposed intervals [lo, hi] of the turn (turn_of), in LociCache::intervals
+};
+
+/// A point (c, s) of the unit circle (c along u, s along v) as a "diamond angle" in [0, 4): a
+/// monotone stand-in for its angle, without trigonometry.
+inline double turn_of(double c, double s) {
+  if (s >= 0) return c >= 0 ? s / (c + s) : 1 + -c / (-c + s);
+  return c < 0 ? 2 + -s / (-c - s) : 3 + c / (c - s);
+}
+constexpr double kFullTurn = 4.0;
+
+/// The two points (c, s) of the unit circle where A c + B s = k M (M = |(A, B)|, |k| < 1): the
+/// direction of (A, B) turned by +-acos(k). First the one turned counter-clockwise.
+inline std::array<std::array<double, 2>, 2> points_at(double A, double B, double M, double k) {
+  const double ca = k, sa = std::sqrt((1 - k) * (1 + k));
+  const double ex = A / M, ey = B / M;  // e and e_perp = (-ey, ex)
+  return {{{ca * ex - sa * ey, ca * ey + sa * ex}, {ca * ex + sa * ey, ca * ey - sa * ex}}};
+}
+
+/// The circle of pieces a and b (both spheres) in a's frame. False when they do not meet in a
+/// circle (apart, or concentric: the sphere solver finds nothing there either).
+inline bool circle_of(const Piece<3>& pa, const Piece<3>& pb, double r0, Arc& arc) {
+  arc.origin = pa.center;
+  arc.scale = pa.radius + r0;
+  const double inv = 1.0 / arc.scale;
+  const Vec3 n = (pb.center - pa.center) * inv;
+  const double q = n.norm();
+  const double rb = (pb.radius + r0) * inv;
+  if (!(q > 1e-9)) return false;
+  const double h = 0.5 * ((q - rb) * (q + rb) + 1.0) / q;  // distance of the circle's plane from 0
+  const double rho2 = (1.0 - h) * (1.0 + h);
+  if (rho2 < -1e-9) return false;
+  const Vec3 k = n / q;
+  arc.y1 = h * k;
+  arc.u = k.unitOrthogonal();
+  arc.v = k.cross(arc.u);
+  arc.rho = std::sqrt(std::max(rho2, 0.0));
+  arc.careful = rho2 < 1e-8;
+  return true;
+}
+
+/// The exposed intervals of the circle against `others` (every piece of its two bodies), appended
+/// to `exposed`. Covered means strictly inside a piece shrunk by twice the overlap tolerance, so a
+/// position the final check (overlap <= kOverlapTol) would keep is never dropped.
+inline void find_exposure(Arc& arc, const Vec3& a_center, double r0, double overlap_tol, std::vector<const Piece<3>*>& others,
+                          std::vector<std::array<double, 2>>& exposed) {
+  arc.exposure = Arc::Exposure::None;
+  const double inv = 1.0 / arc.scale, rho2 = arc.rho * arc.rho;
+  // Covered intervals: |y(t) - p|^2 < re^2, i.e. A cos t + B sin t < C.
+  thread_local std::vector<std::array<double, 2>> covered;
+  covered.clear();
+  for (std::size_t i = 0; i < others.size(); ++i) {
+    const Piece<3>* e = others[i];
+    const double re = (e->radius + r0 - 2 * overlap_tol * e->size) * inv;
+    if (!(re > 0)) continue;
+    const Vec3 w = arc.y1 - (e->center - a_center) * inv;
+    const double wn = w.norm();
+    const double C = (re - wn) * (re + wn) - rho2;
+    if (C <= -2 * arc.rho * wn) continue;  // M <= 2 rho |w|: e misses the circle
+    const double A = 2 * arc.rho * arc.u.dot(w), B = 2 * arc.rho * arc.v.dot(w);
+    const double M = std::sqrt(A * A + B * B);
+    if (C <= -M) continue;
+    const double k = C / M;
+    if (!(k < 1 - 1e-15)) {  // the whole circle is inside e, which is tried first for the next circle
+      std::swap(others[0], others[i]);
+      return;
+    }
+    // A c + B s < C: the arc from the point turned +acos(k) from (A, B), counter-clockwise, to
+    // the one turned -acos(k).
+    const auto ends = points_at(A, B, M, k);
+    const double start = turn_of(ends[0][0], ends[0][1]), end = turn_of(ends[1][0], ends[1][1]);
+    if (start <= end) {
+      covered.push_back({start, end});
+    } else {
+      covered.push_back({start, kFullTurn});
+      covered.push_back({0.0, end});
+    }
+  }
+  std::sort(covered.begin(), covered.end());
+  // The complement in [0, 4), widened a little: the final check decides at the edges.
+  constexpr double kSlack = 1e-7;
+  arc.first = static_cast<int>(exposed.size());
+  double at = 0.0;
+  for (const auto& c : covered) {
+    if (c[0] > at) exposed.push_back({at - kSlack, c[0] + kSlack});
+    at = std::max(at, c[1]);
+  }
+  if (at < kFullTurn) exposed.push_back({at - kSlack, kFullTurn + kSlack});
+  arc.count = static_cast<int>(exposed.size()) - arc.first;
+  if (arc.count > 0) arc.exposure = Arc::Exposure::Intervals;
+}
+
 /// The loci of the particles met so far, folded for one mobile (same shape, rotation, radius).
 /// The front calls the solver for many pairs around one front particle with one mobile: each
 /// particle's loci are built once for it. Walls are built at each call (a few loci; the front's
@@ -148,6 +255,11 @@ struct LociCache {
   std::vector<Piece<D>> pieces;
   std::vector<int> live;
   std::vector<Ball<D>> scratch;
+  // 3D: the exposed pair circles of two blocks, by (block, block): the front solves one front
+  // particle against many pairs of neighbours, so each (front particle, neighbour) pair recurs.
+  std::unordered_map<std::uint64_t, std::pair<int, int>> pair_arcs;  ///< [first, first + count) in arcs
+  std::vector<Arc> arcs;
+  std::vector<std::array<double, 2>> intervals;
 
   /// Forgets everything unless `m` is the mobile the loci were folded for.
   void use(const Mobile<D>& m) {
@@ -158,12 +270,15 @@ struct LociCache {
     for (const Ball<D>& b : mobile) smallest = std::min(smallest, b.radius);
     r0 = 0.5 * smallest;
     blocks.clear(), pieces.clear(), live.clear();
+    pair_arcs.clear(), arcs.clear(), intervals.clear();
   }
 
-  /// The block of a particle body, built if new.
-  const Block& block(const Body<D>& b) {
-    for (const Block& k : blocks)
-      if (k.particle == b.shaped && k.center == b.center && k.radius == b.radius) return k;
+  /// The index of a particle body's block, built if new.
+  int block(const Body<D>& b) {
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+      const Block& k = blocks[i];
+      if (k.particle == b.shaped && k.center == b.center && k.radius == b.radius) return static_cast<int>(i);
+    }
     Block k;
     k.particle = b.shaped, k.center = b.center, k.radius = b.radius;
     k.first = static_cast<int>(pieces.size());
@@ -173,7 +288,46 @@ struct LociCache {
     append_live<D>(pieces, k.first, k.first + k.count, 0, live);
     k.live_count = static_cast<int>(live.size()) - k.live_first;
     blocks.push_back(k);
-    return blocks.back();
+    return static_cast<int>(blocks.size()) - 1;
+  }
+
+  /// 3D: the circles of every live pair (piece of block i, piece of block j) that meet and are
+  /// exposed somewhere (most are not: in clusters of overlapping members the pieces overlap).
+  std::pair<int, int> arcs_of(int i, int j, double overlap_tol) requires(D == 3) {
+    const std::uint64_t key = (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint32_t>(j);
+    if (auto it = pair_arcs.find(key); it != pair_arcs.end()) return it->second;
+    const Block& bi = blocks[static_cast<std::size_t>(i)];
+    const Block& bj = blocks[static_cast<std::size_t>(j)];
+    thread_local std::vector<const Piece<D>*> others;
+    others.clear();
+    for (const Block* k : {&bi, &bj})
+      for (int e = k->first; e < k->first + k->count; ++e) others.push_back(&pieces[static_cast<std::size_t>(e)]);
+    const int first = static_cast<int>(arcs.size());
+    for (int x = bi.live_first; x < bi.live_first + bi.live_count; ++x)
+      for (int y = bj.live_first; y < bj.live_first + bj.live_count; ++y) {
+        const int a = live[static_cast<std::size_t>(x)], b = live[static_cast<std::size_t>(y)];
+        const Piece<D>& pa = pieces[static_cast<std::size_t>(a)];
+        const Piece<D>& pb = pieces[static_cast<std::size_t>(b)];
+        if (!may_meet<D>(pa, pb, r0)) continue;
+        Arc arc;
+        arc.a = a, arc.b = b;
+        if (!circle_of(pa, pb, r0, arc)) continue;
+        if (!arc.careful) find_exposure(arc, pa.center, r0, overlap_tol, others, intervals);
+        if (arc.careful || arc.exposure == Arc::Exposure::Intervals) arcs.push_back(arc);
+      }
+    return pair_arcs[key] = {first, static_cast<int>(arcs.size()) - first};
+  }
+
+  /// 3D: is the point at `turn` of arc k outside the other pieces of its two blocks?
+  /// (Conservatively: an arc position the final check would keep is always exposed.)
+  bool exposed(int k, double turn) const requires(D == 3) {
+    const Arc& arc = arcs[static_cast<std::size_t>(k)];
+    if (arc.exposure == Arc::Exposure::None) return false;
+    for (int e = arc.first; e < arc.first + arc.count; ++e) {
+      const auto& iv = intervals[static_cast<std::size_t>(e)];
+      if ((turn >= iv[0] && turn <= iv[1]) || turn + kFullTurn <= iv[1] || turn - kFullTurn >= iv[0]) return true;
+    }
+    return false;
   }
 };
 
@@ -193,6 +347,8 @@ int BallWrapperSolver<D>::solve(std::span<const Body<D>> fixed, const Mobile<D>&
   // (negative) in `walls`. `all` lists every locus of each body, for the overlap check.
   walls.clear();
   std::array<std::pair<int, int>, D> all;  // [first, last) in cache.pieces, or negative for walls
+  std::array<int, D> block_of;             // the cache block of each particle body (-1: a wall)
+  block_of.fill(-1);
   for (int i = 0; i < D; ++i) {
     const Body<D>& b = fixed[static_cast<std::size_t>(i)];
     auto& l = live[static_cast<std::size_t>(i)];
@@ -204,7 +360,8 @@ int BallWrapperSolver<D>::solve(std::span<const Body<D>> fixed, const Mobile<D>&
       all[static_cast<std::size_t>(i)] = {~first, ~static_cast<int>(walls.size())};
       continue;
     }
-    const auto& k = cache.block(b);
+    block_of[static_cast<std::size_t>(i)] = cache.block(b);
+    const auto& k = cache.blocks[static_cast<std::size_t>(block_of[static_cast<std::size_t>(i)])];
     l.assign(cache.live.begin() + k.live_first, cache.live.begin() + k.live_first + k.live_count);
     all[static_cast<std::size_t>(i)] = {k.first, k.first + k.count};
   }
@@ -241,17 +398,78 @@ int BallWrapperSolver<D>::solve(std::span<const Body<D>> fixed, const Mobile<D>&
   const SphereContactSolver<D> spheres;
   Mobile<D> point;
   point.radius = r0;
+  const auto accept = [&](const Vec<D>& x) {
+    if (found.size() >= out.size()) return;
+    for (const Vec<D>& y : found)
+      if ((x - y).squaredNorm() <= 1e-24 * scale * scale) return;
+    if (keeps(x)) found.push_back(x);
+  };
   const auto try_choice = [&](const std::array<int, D>& choice) {
     for (int i = 0; i < D; ++i) folded[static_cast<std::size_t>(i)] = piece(choice[static_cast<std::size_t>(i)]).as_body();
     const int n = spheres.solve(std::span<const Body<D>>(folded.data(), D), point, sols);
-    for (int k = 0; k < n && found.size() < out.size(); ++k) {
-      const Vec<D>& x = sols[static_cast<std::size_t>(k)].position;
-      bool duplicate = false;
-      for (const Vec<D>& y : found) duplicate = duplicate || (x - y).squaredNorm() <= 1e-24 * scale * scale;
-      if (!duplicate && keeps(x)) found.push_back(x);
-    }
+    for (int k = 0; k < n; ++k) accept(sols[static_cast<std::size_t>(k)].position);
   };
   const auto meet = [&](int a, int b) { return may_meet(piece(a), piece(b), r0); };
+  if constexpr (D == 3) {
+    // Two particle bodies: their exposed pair circles against the third body's loci.
+    std::array<int, 3> order{0, 1, 2};
+    std::stable_partition(order.begin(), order.end(), [&](int i) { return block_of[static_cast<std::size_t>(i)] >= 0; });
+    if (block_of[static_cast<std::size_t>(order[1])] >= 0) {
+      const auto [first, count] = cache.arcs_of(block_of[static_cast<std::size_t>(order[0])],
+                                                block_of[static_cast<std::size_t>(order[1])], kOverlapTol);
+      const std::vector<int>& third = live[static_cast<std::size_t>(order[2])];
+      for (int i = first; i < first + count && found.size() < out.size(); ++i) {
+        const Arc& arc = cache.arcs[static_cast<std::size_t>(i)];
+        for (const int c : third) {
+          if (arc.careful) { try_choice({arc.a, arc.b, c}); continue; }
+          const Piece<D>& pc = piece(c);
+          // The third locus as a plane a2.y = b2 in the arc's frame (radical plane for a sphere).
+          Vec3 a2;
+          double b2;
+          const double inv = 1.0 / arc.scale;
+          if (!pc.is_wall) {
+            a2 = (pc.center - arc.origin) * inv;
+            const double q = a2.norm(), rc = (pc.radius + r0) * inv;
+            b2 = 0.5 * ((q - rc) * (q + rc) + 1.0);
+          } else if (pc.wall.kind == WallKind::Plane) {
+            a2 = pc.wall.normal;
+            b2 = (r0 + pc.wall.normal.dot(pc.wall.point - arc.origin)) * inv;
+          } else {
+            try_choice({arc.a, arc.b, c});
+            continue;
+          }
+          // On the circle y(t) = y1 + rho (cos t u + sin t v): A cos t + B sin t = C.
+          const double A = arc.rho * a2.dot(arc.u), B = arc.rho * a2.dot(arc.v), C = b2 - a2.dot(arc.y1);
+          const double M = std::sqrt(A * A + B * B);
+          if (!(M > 1e-2 * arc.rho * a2.norm())) {  // the plane nearly parallel to the circle's
+            try_choice({arc.a, arc.b, c});
+            continue;
+          }
+          const double ratio = C / M;
+          if (std::abs(ratio) > 1 + 1e-6) continue;        // misses the circle
+          if (std::abs(ratio) > 1 - 1e-8) {                // nearly tangent: the verified solver
+            try_choice({arc.a, arc.b, c});
+            continue;
+          }
+          for (const auto& [ct, st] : points_at(A, B, M, ratio)) {
+            if (!cache.exposed(i, turn_of(ct, st))) continue;
+            const Vec3 x = arc.origin + arc.scale * (arc.y1 + arc.rho * (ct * arc.u + st * arc.v));
+            // The sphere solver's guarantee: every gap within kTangencyTol of the smaller size.
+            bool tangent = true;
+            for (const int k : {arc.a, arc.b, c}) {
+              const Piece<D>& pk = piece(k);
+              const double size = pk.is_wall ? r0 : std::min(r0, pk.radius);
+              tangent = tangent && std::abs(pk.gap(x, r0)) <= SphereContactSolver<D>::kTangencyTol * size;
+            }
+            if (tangent) accept(x);
+            else try_choice({arc.a, arc.b, c});
+          }
+        }
+      }
+      for (std::size_t k = 0; k < found.size(); ++k) out[k].position = found[k];
+      return static_cast<int>(found.size());
+    }
+  }
   for (const int a : live[0]) {
     for (const int b : live[1]) {
       if (!meet(a, b)) continue;

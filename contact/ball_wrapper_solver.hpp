@@ -9,11 +9,16 @@
 // the wall's own centre locus for a ball of radius r_j, shifted by -m_j.
 //
 // A position touching D bodies is on one such sphere (or wall locus) of each body: every choice
-// of one (fixed member or wall, mobile member) per body is solved in closed form by the analytic
-// sphere solver (contact/sphere_contact_solver.hpp: radical planes, then a quadratic), folded to
-// a common mobile radius. The paper's O(n1 n2 n3 m^3) enumeration is pruned by the spheres' own
+// of one (fixed member or wall, mobile member) per body is solved in closed form, folded to a
+// common mobile radius. The paper's O(n1 n2 n3 m^3) enumeration is pruned by the spheres' own
 // geometry: a sphere inside another of the same body carries no boundary, and a choice whose
-// spheres cannot meet pairwise is skipped before any solve. A candidate is kept only if, against
+// spheres cannot meet pairwise is skipped before any solve. In 3D, with two particle bodies, the
+// circles where a sphere of one meets a sphere of the other are built once per (particle,
+// particle, mobile) and cut down to their exposed arcs (outside every other sphere of the two
+// bodies; most circles of overlapping members have none); a third body's sphere or plane then
+// meets a circle where a cos t + b sin t = c. Near-degenerate choices (tiny circles, a plane
+// nearly parallel to the circle's, near tangency) and curved walls go to the analytic sphere
+// solver (contact/sphere_contact_solver.hpp: radical planes, then a quadratic, verified). A candidate is kept only if, against
 // every member of every fixed body, the mobile members overlap by at most kOverlapTol times the
 // smaller radius (and it touches each body: that is how it was built, verified by the solver to
 // 1e-10). Exact up to rounding, no iterations beyond the sphere solver's verification.
