@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "contact/segment_distance.hpp"
+#include "shapes/convex_polytope_shape.hpp"
 #include "shapes/sphere_shape.hpp"
 #include "shapes/spherocylinder_shape.hpp"
 
@@ -20,7 +22,9 @@ struct NarrowPhase<D>::FclShape {
   std::vector<FclPart<D>> parts;
   std::vector<Ball<D>> balls;     // a cluster's members (its pieces); empty for a convex shape
   std::vector<Vec<D>> normals;    // polytopes: facet normals (body frame), separating-axis candidates
-  std::vector<Vec<D>> edges;      // polyhedra: edge directions (body frame)
+  std::vector<Vec<D>> edges;      // polyhedra: edge directions (body frame), triangulated faces' diagonals too
+  std::vector<Vec<D>> polytope_edges;  // convex polyhedra: their true edge directions (body frame)
+  bool convex_polytope = false;   // a ConvexPolytopeShape: normals and polytope_edges are every separating axis
   std::vector<Vec<D>> vertices;   // polytopes: vertices (body frame), for the separating-axis test
 };
 
@@ -334,6 +338,75 @@ Gap<D> NarrowPhase<D>::gap(const Particle<D>& a, const Particle<D>& b) const {
   return fcl_gap(a, b);
 }
 
+namespace {
+/// Both of the polytope kind (checked before fcl_of, which would build FCL geometry for shapes
+/// whose gaps are all analytic).
+template <int D>
+bool polytope_kinds(const Particle<D>& a, const Particle<D>& b) {
+  return std::strcmp(a.shape->kind(), ConvexPolytopeShape<D>::kKind) == 0 && std::strcmp(b.shape->kind(), ConvexPolytopeShape<D>::kKind) == 0;
+}
+}  // namespace
+
+template <int D>
+double NarrowPhase<D>::polytope_separation(const Particle<D>& a, const FclShape& fa, const Particle<D>& b, const FclShape& fb,
+                                           double enough, bool edges) const {
+  world_a_.clear(), world_b_.clear();
+  for (const Vec<D>& v : fa.vertices) world_a_.push_back(a.pose.to_world(v));
+  for (const Vec<D>& v : fb.vertices) world_b_.push_back(b.pose.to_world(v));
+  double best = -std::numeric_limits<double>::infinity();
+  // s(u) along u and -u: how far b lies beyond a (or a beyond b) along the axis.
+  const auto separation = [&](const Vec<D>& u) {
+    double max_a = -std::numeric_limits<double>::infinity(), min_a = std::numeric_limits<double>::infinity();
+    double max_b = -std::numeric_limits<double>::infinity(), min_b = std::numeric_limits<double>::infinity();
+    for (const Vec<D>& v : world_a_) {
+      const double x = u.dot(v);
+      max_a = std::max(max_a, x), min_a = std::min(min_a, x);
+    }
+    for (const Vec<D>& v : world_b_) {
+      const double x = u.dot(v);
+      max_b = std::max(max_b, x), min_b = std::min(min_b, x);
+    }
+    best = std::max({best, min_b - max_a, min_a - max_b});
+    return best > enough;
+  };
+  if (separation(unit_or<D>(Vec<D>(b.pose.position - a.pose.position), Vec<D>::UnitX()))) return best;
+  for (const Vec<D>& n : fa.normals)
+    if (separation(a.pose.rotation * n)) return best;
+  for (const Vec<D>& n : fb.normals)
+    if (separation(b.pose.rotation * n)) return best;
+  if constexpr (D == 3) {
+    if (!edges) return best;
+    for (const Vec3& ea : fa.polytope_edges)
+      for (const Vec3& eb : fb.polytope_edges) {
+        const Vec3 n = (a.pose.rotation * ea).cross(b.pose.rotation * eb);
+        if (n.squaredNorm() > 1e-20 && separation(n.normalized())) return best;
+      }
+  }
+  return best;
+}
+
+template <int D>
+bool NarrowPhase<D>::overlap_beyond(const Particle<D>& a, const Particle<D>& b, double allowed) const {
+  if (polytope_kinds(a, b)) {
+    const FclShape& fa = fcl_of(a.shape);
+    const FclShape& fb = fcl_of(b.shape);
+    if (fa.convex_polytope && fb.convex_polytope) return !(polytope_separation(a, fa, b, fb, -allowed, true) >= -allowed);
+  }
+  return gap(a, b).value < -allowed;
+}
+
+template <int D>
+bool NarrowPhase<D>::gap_exceeds(const Particle<D>& a, const Particle<D>& b, double d) const {
+  // Face normals only: apart polytopes are usually separated best by one, and the bound need
+  // not be tight (the distance query decides the rest).
+  if (polytope_kinds(a, b)) {
+    const FclShape& fa = fcl_of(a.shape);
+    const FclShape& fb = fcl_of(b.shape);
+    if (fa.convex_polytope && fb.convex_polytope && polytope_separation(a, fa, b, fb, d, false) > d) return true;
+  }
+  return gap(a, b).value > d;
+}
+
 template <int D>
 const typename NarrowPhase<D>::FclShape& NarrowPhase<D>::fcl_of(const ShapePtr<D>& s) const {
   auto& slot = cache_[s.get()];
@@ -351,6 +424,13 @@ const typename NarrowPhase<D>::FclShape& NarrowPhase<D>::fcl_of(const ShapePtr<D
           if (std::abs(std::abs(w.dot(v)) - 1) < 1e-12) return;
         list.push_back(v);
       };
+      const auto* poly = dynamic_cast<const ConvexPolytopeShape<D>*>(s.get());
+      slot->convex_polytope = poly != nullptr;
+      if constexpr (D == 3)
+        if (poly)
+          for (const auto& e : poly->edges())
+            add_unique(slot->polytope_edges,
+                       Vec3(poly->vertices()[static_cast<std::size_t>(e.b)] - poly->vertices()[static_cast<std::size_t>(e.a)]).normalized());
       const SurfaceMesh<D> m = s->surface(0);
       for (const auto& f : m.facets) {
         if constexpr (D == 2) {

@@ -47,6 +47,13 @@ class NarrowPhase {
 
   /// Signed gap between two particles and its gradient with respect to b's position.
   Gap<D> gap(const Particle<D>& a, const Particle<D>& b) const;
+  /// gap(a, b).value < -allowed, decided without a distance query for two convex polytopes (by
+  /// the separating-axis theorem, which is exact for them: the first axis that separates them
+  /// by more than -allowed ends it).
+  bool overlap_beyond(const Particle<D>& a, const Particle<D>& b, double allowed) const;
+  /// gap(a, b).value > d; for two convex polytopes a separating axis that shows more than d (a
+  /// lower bound of the gap) answers without a distance query.
+  bool gap_exceeds(const Particle<D>& a, const Particle<D>& b, double d) const;
   /// Signed gap between a container wall (the particle on its container side) and a particle.
   /// Planes, sphere and cylinder walls: exact for shapes whose hull balls span them (balls,
   /// spherocylinders, clusters, polytopes); conservative (never reports too large a gap) for
@@ -63,6 +70,11 @@ class NarrowPhase {
   struct FclShape;
   const FclShape& fcl_of(const ShapePtr<D>& s) const;
   Gap<D> fcl_gap(const Particle<D>& a, const Particle<D>& b) const;
+  /// Two convex polytopes: the largest separation s(u) over the separating-axis candidates (with
+  /// `edges`, every one: their gap on overlap; a lower bound of the gap in any case), stopped
+  /// early once it exceeds `enough`.
+  double polytope_separation(const Particle<D>& a, const FclShape& fa, const Particle<D>& b, const FclShape& fb, double enough,
+                             bool edges) const;
 
   /// The analytic gap of a kind pair, or null for FCL; memoised by the kind() pointers, since a
   /// string-keyed lookup per query cost as much as a capsule gap.

@@ -156,7 +156,7 @@ class ShapeFront {
     grid_.for_each_within(p.pose.position, r, [&](int id, const Vec<D>&, double rk, double) {
       if (!free) return;
       const Particle<D>& q = particles_->at(static_cast<std::size_t>(id));
-      if (np_.gap(q, p).value < -tol_ * std::min(r, rk)) free = false;
+      if (np_.overlap_beyond(q, p, tol_ * std::min(r, rk))) free = false;
     });
     return free;
   }
@@ -327,7 +327,7 @@ class ShapeFront {
     for (const Neighbour& n : nb_) {
       if (front_only && !in_front_[static_cast<std::size_t>(n.id)]) continue;
       const Particle<D>& q = res.packing.particles[static_cast<std::size_t>(n.id)];
-      if (np_.gap(p0, q).value <= 2 * R) bodies_.push_back(Body<D>::of_particle(q, n.id));
+      if (!np_.gap_exceeds(p0, q, 2 * R)) bodies_.push_back(Body<D>::of_particle(q, n.id));
     }
   }
 
@@ -338,7 +338,7 @@ class ShapeFront {
     if (b.is_wall()) return np_.gap(*b.wall, *a.shaped).value <= 2 * R;
     const double reach = a.radius + b.radius + 2 * R;
     if ((a.center - b.center).squaredNorm() > reach * reach) return false;
-    return np_.gap(*a.shaped, *b.shaped).value <= 2 * R;
+    return !np_.gap_exceeds(*a.shaped, *b.shaped, 2 * R);
   }
 
   /// Does p overlap a particle of V beyond the tolerance? The last blocker is tried first.
@@ -350,7 +350,7 @@ class ShapeFront {
       const double rk = other.bounding_radius();
       const double reach = r + rk;
       if ((other.pose.position - p.pose.position).squaredNorm() >= reach * reach) return false;
-      return np_.gap(other, p).value < -tol_ * std::min(r, rk);
+      return np_.overlap_beyond(other, p, tol_ * std::min(r, rk));
     };
     if (last_blocker_ < n && blocks(last_blocker_)) return true;
     for (int q = 0; q < n; ++q)

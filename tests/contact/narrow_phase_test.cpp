@@ -183,6 +183,46 @@ TEST(NarrowPhase, FclAndClusterPathsAgreeWithReferences3D) {
   check_against_reference<3>(Kind::Cylinder, Kind::Ellipsoid, 40, 42, 5e-8);
 }
 
+// ------------------------------------------------------------ predicates of the front
+
+/// overlap_beyond and gap_exceeds (the front's overlap and reach tests; for two polytopes by
+/// separating axes, without a distance query) give the verdict of the independent reference
+/// gap, wherever it is not within `margin` of the size of the threshold (1e-12 for polytope
+/// pairs; the narrow phase's own accuracy, 5e-8, for the pairs that go through gap()).
+template <int D>
+void predicates_round(Kind ka, Kind kb, int trials, std::uint64_t seed, double margin) {
+  NarrowPhase<D> np;
+  Rng rng(seed);
+  int decided = 0;
+  for (int t = 0; t < trials; ++t) {
+    Particle<D> a, b;
+    // Around each threshold below, and anywhere from deep overlap to well apart.
+    const double targets[] = {rng.uniform(-2e-9, 0), rng.uniform(-0.06, -0.04), rng.uniform(0.29, 0.31), rng.uniform(-0.6, 1.0)};
+    if (!random_pair<D>(np, ka, kb, targets[t % 4], rng, a, b)) continue;
+    const double size = std::min(a.bounding_radius(), b.bounding_radius());
+    const double ref = static_cast<double>(ref_gap<D>(a, b).value);
+    for (const double allowed : {1e-9 * size, 0.05 * size}) {
+      if (std::abs(ref + allowed) <= margin * size) continue;
+      ++decided;
+      EXPECT_EQ(np.overlap_beyond(a, b, allowed), ref < -allowed) << "allowed " << allowed << " reference " << num(ref) << pair_literal<D>(a, b);
+    }
+    for (const double d : {0.0, 0.3 * size}) {
+      if (std::abs(ref - d) <= margin * size) continue;
+      ++decided;
+      EXPECT_EQ(np.gap_exceeds(a, b, d), ref > d) << "d " << d << " reference " << num(ref) << pair_literal<D>(a, b);
+    }
+  }
+  std::printf("  %dD %-10s - %-10s: %d verdicts\n", D, kind_name(ka), kind_name(kb), decided);
+  EXPECT_GT(decided, trials);
+}
+
+TEST(NarrowPhase, OverlapAndReachPredicatesAgreeWithTheReference) {
+  predicates_round<2>(Kind::Polytope, Kind::Polytope, 200, 51, 1e-12);
+  predicates_round<3>(Kind::Polytope, Kind::Polytope, 200, 52, 1e-12);
+  predicates_round<3>(Kind::Sphere, Kind::Polytope, 60, 53, 5e-8);  // the general path
+  predicates_round<3>(Kind::Cluster, Kind::Polytope, 60, 54, 5e-8);
+}
+
 // ------------------------------------------------------------------- gradient and symmetry
 
 /// Central differences of the gap with respect to b's position against the returned normal,
