@@ -11,6 +11,10 @@ import sys
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parent.parent
+# The binary the studies run ($FRONTPACK, else the default build), and the lock that keeps timed
+# runs of different studies from overlapping (`flock LOCK frontpack ...`).
+FRONTPACK = os.environ.get("FRONTPACK", str(REPO / "build" / "cli" / "frontpack"))
+LOCK = "/tmp/frontpack-bench.lock"
 
 
 def sh(*cmd):

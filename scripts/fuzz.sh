@@ -13,20 +13,7 @@ root=$PWD
 seconds=${1:-60}
 [[ "$seconds" =~ ^[0-9]+$ ]] || { echo "usage: scripts/fuzz.sh [SECONDS_PER_TARGET]" >&2; exit 2; }
 
-scripts/install-deps.sh  # the libraries frontpack builds with
-# clang 16 and its runtime libraries (libFuzzer, the sanitizers), Debian packages installed when
-# missing. Debian 12's default clang (14) cannot build scene_yaml.cpp: lambdas there capture
-# structured bindings (C++20), which clang supports from version 16.
-missing=()
-for p in clang-16 libclang-rt-16-dev; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "installing: ${missing[*]}"
-  if [[ $(id -u) -ne 0 ]]; then SUDO=sudo; else SUDO=; fi
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+scripts/install-deps.sh --fuzz  # the libraries frontpack builds with, clang 16 and its runtime
 
 targets=(scene mesh packing)
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-16 \

@@ -2,8 +2,14 @@
 # Installs the Debian packages frontpack needs, only those missing (run as root).
 #   scripts/install-deps.sh          what `frontpack pack` needs to build
 #   scripts/install-deps.sh --test   plus GoogleTest, Google Benchmark and the Python modules the tests use
+#   scripts/install-deps.sh --fuzz   plus clang 16 and its runtime (libFuzzer, sanitizers): Debian 12's
+#                                    default clang (14) cannot build scene_yaml.cpp, whose lambdas
+#                                    capture structured bindings (C++20, clang >= 16)
 set -euo pipefail
 packages=(build-essential cmake libeigen3-dev libcgal-dev libfcl-dev libccd-dev libnlopt-cxx-dev libnlopt-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev)
+if [[ "${1:-}" == "--fuzz" ]]; then
+  packages+=(clang-16 libclang-rt-16-dev)
+fi
 if [[ "${1:-}" == "--test" ]]; then
   # python3-vtk9: the VTU files are read back by VTK itself; numpy: independent cross-checks;
   # matplotlib: `frontpack analyze --plots`.

@@ -17,7 +17,6 @@ figure from runs.csv alone. Every run is wrapped in
 """
 import csv
 import json
-import os
 import subprocess
 import sys
 import tempfile
@@ -26,12 +25,9 @@ from pathlib import Path
 import yaml
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
-from runkit import mean, provenance_lines, sd, table  # noqa: E402
+from runkit import FRONTPACK, LOCK, mean, provenance_lines, sd, table  # noqa: E402
 
 HERE = Path(__file__).resolve().parent
-REPO = HERE.parent.parent
-FRONTPACK = os.environ.get("FRONTPACK", str(REPO / "build" / "cli" / "frontpack"))
-LOCK = "/tmp/frontpack-bench.lock"
 SEEDS = [1, 2, 3]
 SOLVERS = ["auto", "minimisation"]
 
