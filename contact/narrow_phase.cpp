@@ -350,9 +350,11 @@ bool polytope_kinds(const Particle<D>& a, const Particle<D>& b) {
 template <int D>
 double NarrowPhase<D>::polytope_separation(const Particle<D>& a, const FclShape& fa, const Particle<D>& b, const FclShape& fb,
                                            double enough, bool edges) const {
+  // Vertices relative to a's position: the projections keep their digits far from the origin.
   world_a_.clear(), world_b_.clear();
-  for (const Vec<D>& v : fa.vertices) world_a_.push_back(a.pose.to_world(v));
-  for (const Vec<D>& v : fb.vertices) world_b_.push_back(b.pose.to_world(v));
+  const Vec<D> offset = b.pose.position - a.pose.position;
+  for (const Vec<D>& v : fa.vertices) world_a_.push_back(a.pose.rotation * v);
+  for (const Vec<D>& v : fb.vertices) world_b_.push_back(offset + b.pose.rotation * v);
   double best = -std::numeric_limits<double>::infinity();
   // s(u) along u and -u: how far b lies beyond a (or a beyond b) along the axis.
   const auto separation = [&](const Vec<D>& u) {
@@ -369,7 +371,7 @@ double NarrowPhase<D>::polytope_separation(const Particle<D>& a, const FclShape&
     best = std::max({best, min_b - max_a, min_a - max_b});
     return best > enough;
   };
-  if (separation(unit_or<D>(Vec<D>(b.pose.position - a.pose.position), Vec<D>::UnitX()))) return best;
+  if (separation(unit_or<D>(offset, Vec<D>::UnitX()))) return best;
   for (const Vec<D>& n : fa.normals)
     if (separation(a.pose.rotation * n)) return best;
   for (const Vec<D>& n : fb.normals)
