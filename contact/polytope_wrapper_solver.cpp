@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <deque>
+#include <functional>
 #include <limits>
+#include <unordered_map>
 #include <vector>
 
 #include "contact/sphere_two_contact.hpp"
@@ -130,29 +134,51 @@ void corner_obstacle(const Wall<3>& w, const TurnedMobile& A, Obstacle& O) {
 
 /// Obstacles of the particles met so far for one turned mobile (the front asks for many pairs
 /// around one front particle with one mobile): each particle's planes are built once.
+/// A cache key: a body by its address and position (the particles' vector may have moved, and a
+/// stale pointer must not match another particle), hashed on the address.
+struct BodyKey {
+  const void* address;
+  V point, normal;
+  bool operator==(const BodyKey& o) const { return address == o.address && point == o.point && normal == o.normal; }
+};
+/// A wall (no address) by its point and normal.
+inline BodyKey key_of(const Body<3>& b) {
+  return b.is_wall() ? BodyKey{nullptr, b.wall->point, b.wall->normal} : BodyKey{b.shaped, b.center, V::Zero()};
+}
+struct PairKey {
+  BodyKey first, second;
+  bool operator==(const PairKey& o) const { return first == o.first && second == o.second; }
+};
+struct KeyHash {
+  static std::size_t bits(double x) {
+    std::uint64_t u;
+    std::memcpy(&u, &x, sizeof u);
+    return std::hash<std::uint64_t>{}(u);
+  }
+  std::size_t operator()(const BodyKey& k) const {
+    return std::hash<const void*>{}(k.address) ^ (bits(k.point.x()) * 3) ^ (bits(k.point.y()) * 5) ^ (bits(k.point.z()) * 7);
+  }
+  std::size_t operator()(const PairKey& k) const { return (*this)(k.first) * 31 + (*this)(k.second); }
+};
+
 struct ObstacleCache {
-  struct Entry {
-    const Particle<3>* particle;
-    V center;
-    Obstacle obstacle;
-  };
   const Shape<3>* mobile = nullptr;
   Mat<3> rotation = Mat<3>::Identity();
   TurnedMobile turned;
-  std::deque<Entry> entries;  ///< a deque: the references handed out stay valid as it grows
+  std::deque<Obstacle> obstacles;  ///< a deque: the references handed out stay valid as it grows
+  std::unordered_map<BodyKey, std::size_t, KeyHash> index;
 
   void use(const Poly& shape, const Mat<3>& R) {
-    if (&shape == mobile && R == rotation && entries.size() < 256) return;
+    if (&shape == mobile && R == rotation && obstacles.size() < 256) return;
     mobile = &shape, rotation = R;
     turned.set(shape, R);
-    entries.clear();
+    obstacles.clear(), index.clear();
   }
   const Obstacle& of(const Particle<3>& p, const Poly& shape) {
-    for (const Entry& e : entries)
-      if (e.particle == &p && e.center == p.pose.position) return e.obstacle;
-    entries.push_back({&p, p.pose.position, Obstacle{}});
-    polytope_obstacle(shape, p.pose.rotation, p.pose.position, turned, entries.back().obstacle);
-    return entries.back().obstacle;
+    const auto [it, added] = index.try_emplace(BodyKey{&p, p.pose.position, V::Zero()}, obstacles.size());
+    if (!added) return obstacles[it->second];
+    polytope_obstacle(shape, p.pose.rotation, p.pose.position, turned, obstacles.emplace_back());
+    return obstacles.back();
   }
 };
 
@@ -246,26 +272,18 @@ void walk_curve(const Obstacle& P, const Obstacle& Q, const std::vector<V>& star
 /// The curves of the (front particle, body) pairs met so far, for one mobile: the front tries
 /// each pair with many third bodies, and the curve does not depend on the third.
 struct CurveCache {
-  struct Entry {
-    const Particle<3>* s0;
-    V s0_center;
-    const Particle<3>* particle;  ///< the second body, or null for a wall
-    V point, normal;              ///< its centre, or the wall's point and normal
-    std::vector<Segment> curve;
-  };
   const Shape<3>* mobile = nullptr;
   Mat<3> rotation = Mat<3>::Identity();
-  std::deque<Entry> entries;
+  std::deque<std::vector<Segment>> curves;
+  std::unordered_map<PairKey, std::size_t, KeyHash> index;
+
+  void clear() { curves.clear(), index.clear(); }
 
   const std::vector<Segment>& of(const Body<3>& b0, const Body<3>& b1, const Obstacle& P, const Obstacle& Q, const Poly& shape,
                                  double scale) {
-    const V point = b1.is_wall() ? b1.wall->point : b1.center;
-    const V normal = b1.is_wall() ? b1.wall->normal : V::Zero();
-    const Particle<3>* particle = b1.is_wall() ? nullptr : b1.shaped;
-    for (const Entry& e : entries)
-      if (e.s0 == b0.shaped && e.s0_center == b0.center && e.particle == particle && e.point == point && e.normal == normal)
-        return e.curve;
-    if (entries.size() >= 256) entries.clear();
+    const PairKey key{key_of(b0), key_of(b1)};
+    if (const auto it = index.find(key); it != index.end()) return curves[it->second];
+    if (curves.size() >= 256) clear();
     // Starts spread along where equivalent spheres touch the two bodies (every loop of the curve
     // lies near that circle).
     thread_local std::vector<V> starts;
@@ -276,9 +294,9 @@ struct CurveCache {
     two_contact_positions(b0.center, mid(*b0.shaped->shape), eq, mid(shape), kLoopSamples, starts);
     for (V& x : starts) x -= b0.center;
     if (starts.empty()) starts.push_back(V::Zero());  // from s0's centre: Newton finds the curve if any
-    entries.push_back({b0.shaped, b0.center, particle, point, normal, {}});
-    walk_curve(P, Q, starts, scale, entries.back().curve);
-    return entries.back().curve;
+    index.emplace(key, curves.size());
+    walk_curve(P, Q, starts, scale, curves.emplace_back());
+    return curves.back();
   }
 };
 
@@ -294,7 +312,7 @@ int PolytopeWrapperSolver::solve(std::span<const Body<3>> fixed, const Mobile<3>
   cache.use(*mobile_shape, mobile.rotation);
   if (curves.mobile != mobile_shape || curves.rotation != mobile.rotation) {
     curves.mobile = mobile_shape, curves.rotation = mobile.rotation;
-    curves.entries.clear();
+    curves.clear();
   }
   std::array<const Obstacle*, 3> O{};
   std::array<double, 3> tol{};
