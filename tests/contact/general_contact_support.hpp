@@ -1331,4 +1331,25 @@ void expect_same_when_shifted(const ContactSolver<D>& solver, Kind mobile, const
   EXPECT_GE(compared, 27);
 }
 
+/// Problems built as usual, then the last fixed body moved `away` on every axis: no position can
+/// touch every body, and the solver returns none. At least `min_tried` problems are built.
+template <int D>
+void expect_nothing_when_one_is_far(const ContactSolver<D>& solver, Kind mobile, const std::array<Kind, D>& fixed, double away,
+                                    int trials, int min_tried, std::uint64_t seed) {
+  NarrowPhase<D> np;
+  Rng rng(seed);
+  int tried = 0;
+  for (int trial = 0; trial < trials; ++trial) {
+    Problem<D> pb;
+    if (!construct_problem<D>(pb, np, mobile, fixed, Sizes{}, rng)) continue;
+    Particle<D> p = *pb.fixed[D - 1].shaped;
+    p.pose.position += Vec<D>::Constant(away);
+    pb.set_particle(D - 1, p);
+    std::array<Placement<D>, ContactSolver<D>::kMaxCandidates> out;
+    EXPECT_EQ(solver.solve(pb.span(), pb.mobile(), out), 0) << "trial " << trial;
+    ++tried;
+  }
+  EXPECT_GE(tried, min_tried);
+}
+
 }  // namespace fp::general_test

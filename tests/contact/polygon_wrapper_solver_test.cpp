@@ -112,21 +112,7 @@ TEST(PolygonWrapperSolver, FindsEveryPositionOfTheMinimisation) {
 // ============================================================= 4. failures and extremes
 
 TEST(PolygonWrapperSolver, FarApartGivesNothing) {
-  NarrowPhase<2> np;
-  const PolygonWrapperSolver solver;
-  Rng rng(9300);
-  int tried = 0;
-  for (int trial = 0; trial < 40; ++trial) {
-    Problem<2> pb;
-    if (!construct_problem<2>(pb, np, Kind::Polytope, {Kind::Polytope, Kind::Capsule}, Sizes{}, rng)) continue;
-    Particle<2> p = *pb.fixed[1].shaped;
-    p.pose.position += Vec2(50, 50);
-    pb.set_particle(1, p);
-    Out out;
-    EXPECT_EQ(solver.solve(pb.span(), pb.mobile(), out), 0) << "trial " << trial;
-    ++tried;
-  }
-  EXPECT_GE(tried, 36);
+  expect_nothing_when_one_is_far<2>(PolygonWrapperSolver{}, Kind::Polytope, {Kind::Polytope, Kind::Capsule}, 50, 40, 36, 9300);
 }
 
 TEST(PolygonWrapperSolver, ThinCapsulesAndSizeRatioOneToHundred) {

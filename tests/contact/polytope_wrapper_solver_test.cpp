@@ -147,21 +147,8 @@ TEST(PolytopeWrapperSolver, FindsEveryPositionOfTheMinimisation) {
 // ============================================================= 4. failures and extremes
 
 TEST(PolytopeWrapperSolver, FarApartGivesNothing) {
-  NarrowPhase<3> np;
-  const PolytopeWrapperSolver solver;
-  Rng rng(9900);
-  int tried = 0;
-  for (int trial = 0; trial < 30; ++trial) {
-    Problem<3> pb;
-    if (!construct_problem<3>(pb, np, Kind::Polytope, {Kind::Polytope, Kind::Polytope, Kind::Polytope}, Sizes{}, rng)) continue;
-    Particle<3> p = *pb.fixed[2].shaped;
-    p.pose.position += Vec3(50, 50, 50);
-    pb.set_particle(2, p);
-    Out out;
-    EXPECT_EQ(solver.solve(pb.span(), pb.mobile(), out), 0) << "trial " << trial;
-    ++tried;
-  }
-  EXPECT_GE(tried, 27);
+  expect_nothing_when_one_is_far<3>(PolytopeWrapperSolver{}, Kind::Polytope, {Kind::Polytope, Kind::Polytope, Kind::Polytope}, 50,
+                                    30, 27, 9900);
 }
 
 TEST(PolytopeWrapperSolver, SizeRatioOneToHundred) {
