@@ -219,24 +219,37 @@ Gap<D> support_gap(const ConvexPiece<D>& A, const ConvexPiece<D>& B, const Vec<D
 /// largest separation over the candidate axes (facet normals, edge crosses), each axis' extent
 /// read off the world vertices directly.
 template <int D>
+struct AxisSeparation {
+  double along;    ///< how far b lies beyond a along u: min_b - max_a of the projections
+  double against;  ///< how far b lies beyond a along -u: min_a - max_b
+};
+
+/// The separations of two vertex sets along the axis u, both ways.
+template <int D>
+AxisSeparation<D> separation_along(const std::vector<Vec<D>>& va, const std::vector<Vec<D>>& vb, const Vec<D>& u) {
+  double max_a = -std::numeric_limits<double>::infinity(), min_a = std::numeric_limits<double>::infinity();
+  double max_b = -std::numeric_limits<double>::infinity(), min_b = std::numeric_limits<double>::infinity();
+  for (const Vec<D>& v : va) {
+    const double x = u.dot(v);
+    max_a = std::max(max_a, x);
+    min_a = std::min(min_a, x);
+  }
+  for (const Vec<D>& v : vb) {
+    const double x = u.dot(v);
+    max_b = std::max(max_b, x);
+    min_b = std::min(min_b, x);
+  }
+  return {min_b - max_a, min_a - max_b};
+}
+
+template <int D>
 Gap<D> polytope_sat_gap(const std::vector<Vec<D>>& va, const std::vector<Vec<D>>& vb, const std::vector<Vec<D>>& axes,
                         const Vec<D>& u0) {
   Gap<D> best{-std::numeric_limits<double>::infinity(), unit_or<D>(u0, Vec<D>::UnitX())};
   auto consider = [&](const Vec<D>& u) {
-    double max_a = -std::numeric_limits<double>::infinity(), min_a = std::numeric_limits<double>::infinity();
-    double max_b = -std::numeric_limits<double>::infinity(), min_b = std::numeric_limits<double>::infinity();
-    for (const Vec<D>& v : va) {
-      const double x = u.dot(v);
-      max_a = std::max(max_a, x);
-      min_a = std::min(min_a, x);
-    }
-    for (const Vec<D>& v : vb) {
-      const double x = u.dot(v);
-      max_b = std::max(max_b, x);
-      min_b = std::min(min_b, x);
-    }
-    if (min_b - max_a > best.value) best = {min_b - max_a, u};     // b beyond a along u
-    if (min_a - max_b > best.value) best = {min_a - max_b, Vec<D>(-u)};  // along -u
+    const AxisSeparation<D> s = separation_along<D>(va, vb, u);
+    if (s.along > best.value) best = {s.along, u};                 // b beyond a along u
+    if (s.against > best.value) best = {s.against, Vec<D>(-u)};    // along -u
   };
   consider(best.normal);
   for (const Vec<D>& u : axes) consider(u);
@@ -358,17 +371,8 @@ double NarrowPhase<D>::polytope_separation(const Particle<D>& a, const FclShape&
   double best = -std::numeric_limits<double>::infinity();
   // s(u) along u and -u: how far b lies beyond a (or a beyond b) along the axis.
   const auto separation = [&](const Vec<D>& u) {
-    double max_a = -std::numeric_limits<double>::infinity(), min_a = std::numeric_limits<double>::infinity();
-    double max_b = -std::numeric_limits<double>::infinity(), min_b = std::numeric_limits<double>::infinity();
-    for (const Vec<D>& v : world_a_) {
-      const double x = u.dot(v);
-      max_a = std::max(max_a, x), min_a = std::min(min_a, x);
-    }
-    for (const Vec<D>& v : world_b_) {
-      const double x = u.dot(v);
-      max_b = std::max(max_b, x), min_b = std::min(min_b, x);
-    }
-    best = std::max({best, min_b - max_a, min_a - max_b});
+    const AxisSeparation<D> s = separation_along<D>(world_a_, world_b_, u);
+    best = std::max({best, s.along, s.against});
     return best > enough;
   };
   if (separation(unit_or<D>(offset, Vec<D>::UnitX()))) return best;
