@@ -35,11 +35,6 @@ void check_in(const Scene& scene) {
 }  // namespace
 
 void check_shape_scene(const Scene& scene) {
-  // The general front keeps F as a heap by distance to the seed point (the default); the
-  // sphere front's other orders are not implemented for it.
-  if (scene.packer.front_pick != FrontPick::ClosestToSeed)
-    throw std::invalid_argument(scene.source_path + ": key 'packer.front': only 'closest' is implemented for "
-                                "non-spherical particles");
   if (scene.dimension == 2) check_in<2>(scene);
   else check_in<3>(scene);
 }

@@ -1,12 +1,7 @@
 #pragma once
-// The advancing front for particles of any shape: paper 002 Pseudocode 1 (as in
-// advancing_front.hpp) with each placement delegated to the contact solver the registry picks
-// for the shape kinds involved (paper 004: minimisation by default, analytic where registered).
-// Neighbourhoods use circumscribed radii (the grid is the broad phase); candidate tests use the
-// narrow phase. Same levers and defaults as the sphere front where they apply: s0 closest to the
-// seed point, neighbours nearest first, walls as bodies (planes, spheres, cylinders, reflex
-// corners), the kept candidate closest to the seed (wall contacts first), a pool of drafts so a
-// particle that does not fit waits instead of being resized, resumption in voids when F empties.
+// Packing particles of any shape: the one advancing front (front/advancing_front.hpp) with the
+// particle model of general shapes (front/shape_model.hpp). Its result type, which carries the
+// general solvers' counters, is declared here so that the sphere packer never includes them.
 #include <cstdint>
 #include <vector>
 

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <regex>
+#include <utility>
+#include <vector>
 
 #include "cli_test_util.hpp"
 
@@ -126,16 +128,31 @@ TEST_P(CliShapes, YadeCannotHoldCapsules) {
 
 // The general front keeps F by distance to the seed point only: another `front` is refused
 // before any work rather than silently ignored.
-TEST_P(CliShapes, OnlyClosestFrontPick) {
+// One front for every shape: the levers of the sphere front mean the same for shapes. Each one
+// here gives a valid packing of the requested count (validated by `pack`), different from the
+// default one (the lever reached the packer).
+TEST_P(CliShapes, EveryFrontLeverAppliesToShapes) {
   const int D = GetParam();
+  const int n = D == 2 ? 25 : 15;
   TempDir dir;
-  write_bytes(dir.work() / "caps.yaml", capsule_scene(D, 5) + "packer: {front: random}\n");
   fs::create_directories(dir.work() / "out");
-  const auto before = listing(dir.work());
-  const RunResult r = run_frontpack(dir, "pack caps.yaml");
-  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
-  EXPECT_NE(r.err.find("packer.front"), std::string::npos) << r.err;
-  EXPECT_EQ(listing(dir.work()), before);
+  auto pack = [&](const std::string& name, const std::string& packer) {
+    write_bytes(dir.work() / (name + ".yaml"), capsule_scene(D, n) + packer);
+    const RunResult r = run_frontpack(dir, "pack " + name + ".yaml -o out/" + name + ".csv");
+    EXPECT_EQ(r.exit_code, 0) << name << ": " << r.out << r.err;
+    EXPECT_NE(r.out.find("validation     ok"), std::string::npos) << name << ": " << r.out;
+    const std::string csv = read_bytes(dir.work() / ("out/" + name + ".csv"));
+    EXPECT_EQ(lines_of(csv).size(), static_cast<std::size_t>(n) + 1) << name;
+    return csv;
+  };
+  const std::string base = pack("default", "");
+  for (const auto& [name, packer] : std::vector<std::pair<std::string, std::string>>{
+           {"random", "packer: {front: random}\n"},
+           {"fifo", "packer: {front: fifo}\n"},
+           {"first", "packer: {candidate: first, pair_order: index}\n"},
+           {"probe", "packer: {probe_smallest: true, radius_pool: 6}\n"},
+           {"pool1", "packer: {radius_pool: 1}\n"}})
+    EXPECT_NE(pack(name, packer), base) << name;
 }
 
 // packer.contact_solver: minimisation places every particle by minimisation (no closed-form
