@@ -244,7 +244,7 @@ class AdvancingFront {
       const std::size_t k2 = largest_in_pool();
       const Draft& d2 = pool_[k2];
       const Vec<D> u = front_parts::direction_with_most_room<D>(Vec<D>::Zero(), 1.0, [&](const Vec<D>& v) {
-        return model_.room(d2, model_.touching(i1, d2, v));
+        return model_.room(d2, model_.beside(i1, d2, v));
       });
       const Vec<D> c2 = model_.touching(i1, d2, u);
       if (model_.fits(d2, c2)) {
@@ -263,7 +263,7 @@ class AdvancingFront {
         return true;
       }
       // A slab leaves a window of a few degrees: the point with the most room.
-      auto room_at = [&](double phi) { return model_.room(d3, model_.touching_both(i1, i2, d3, phi)); };
+      auto room_at = [&](double phi) { return model_.room(d3, model_.beside_both(i1, i2, d3, phi)); };
       constexpr int kSteps = 4096;
       double best_room = -std::numeric_limits<double>::infinity(), best_phi = 0;
       for (int s = 0; s < kSteps; ++s) {

@@ -89,6 +89,10 @@ class SphereModel {
   /// The position of a particle of radius r touching particle `id` in direction u.
   Vec<D> touching(int id, Draft r, const Vec<D>& u) const { return position(id) + (radius(id) + r) * u; }
 
+  /// Where the thin-container searches evaluate the room: exactly touching, for spheres.
+  Vec<D> beside(int id, Draft r, const Vec<D>& u) const { return touching(id, r, u); }
+  Vec<D> beside_both(int ia, int ib, Draft r, double phi) const { return touching_both(ia, ib, r, phi); }
+
   /// 3D: the point at angle phi of the circle of centres touching particles a and b.
   Vec<D> touching_both(int ia, int ib, Draft r, double phi) const {
     static_assert(D == 3);

@@ -304,6 +304,69 @@ TEST(ShapeFront, MixedSpheresCapsulesClusters3D) {
   EXPECT_EQ(ids.size(), 3u);
 }
 
+// ---- the levers of the one front -------------------------------------------------------------
+
+// The front is one manager for every shape: each lever of the sphere front gives a packing of
+// shapes that passes every independent check, differs from the default one (the lever reached
+// the packer) and is reproducible (front: random draws s0 from the seed's stream).
+template <int D>
+void expect_every_lever_valid(const std::string& family) {
+  SCOPED_TRACE(std::to_string(D) + "D " + family);
+  const std::string& particles = (D == 2 ? kFamilies2 : kFamilies3).at(family);
+  const PackSetup<D> setup = make_setup<D>(Where::NonConvex);
+  const std::uint64_t n = 30;
+  const PackRun<D> base = pack_run<D>(particles, setup, n, 9);
+  check_packing<D>(base, setup, n);
+  const std::vector<std::pair<const char*, std::function<void(fp::PackerOptions&)>>> levers = {
+      {"front: random", [](fp::PackerOptions& o) { o.front_pick = fp::FrontPick::Random; }},
+      {"front: fifo", [](fp::PackerOptions& o) { o.front_pick = fp::FrontPick::Fifo; }},
+      {"candidate: first", [](fp::PackerOptions& o) { o.candidate = fp::CandidateChoice::First; o.pair_order = fp::PairOrder::Index; }},
+      {"probe_smallest: true, radius_pool: 6", [](fp::PackerOptions& o) { o.probe_smallest = true; o.radius_pool = 6; }},
+      {"radius_pool: 1", [](fp::PackerOptions& o) { o.radius_pool = 1; }},
+  };
+  for (const auto& [name, tweak] : levers) {
+    SCOPED_TRACE(name);
+    const PackRun<D> run = pack_run<D>(particles, setup, n, 9, tweak);
+    check_packing<D>(run, setup, n);
+    EXPECT_FALSE(bitwise_same<D>(run.res.packing, base.res.packing));
+    EXPECT_TRUE(bitwise_same<D>(run.res.packing, pack_run<D>(particles, setup, n, 9, tweak).res.packing));
+  }
+}
+
+TEST(ShapeFrontLevers, EveryLeverGivesAValidPacking2D) {
+  expect_every_lever_valid<2>("spherocylinder");
+  expect_every_lever_valid<2>("polygon");
+}
+TEST(ShapeFrontLevers, EveryLeverGivesAValidPacking3D) {
+  expect_every_lever_valid<3>("spherocylinder");
+  expect_every_lever_valid<3>("cluster");
+}
+
+// A container one particle thick: random directions almost never find the slab's plane, so the
+// initial cluster needs the search for the direction with the most room (shared with the sphere
+// front). Spheres of one size as a shape (they go through the shape model) and capsules lying in
+// the slab's plane fill a slab 1.001 diameters thick with a monolayer.
+TEST(ShapeFrontThin, SlabOneParticleThick) {
+  const double r = 0.25;
+  for (const bool capsules : {false, true}) {
+    SCOPED_TRACE(capsules ? "capsules" : "spheres");
+    PackSetup<3> setup;
+    // Capsules of aspect ratio 0.5 lying flat (fixed orientation: axis along x) are 2 x 0.5 r thick.
+    const double thickness = (capsules ? 1.0 : 2.0) * r * 1.001;
+    const Vec3 lo(0, 0, 0), hi(4, 4, thickness);
+    setup.container = std::make_shared<fp::BoxContainer<3>>(lo, hi);
+    setup.sd = box_distance<3>(lo, hi);
+    setup.name = "slab one particle thick";
+    const std::string particles =
+        capsules ? "  - shape: spherocylinder\n    aspect_ratio: 0.5\n    size: {distribution: constant, value: 0.25}\n"
+                   "    orientation: {fixed: [1, 0, 0, 0]}\n"
+                 : "  - shape: sphere\n    size: {distribution: constant, value: 0.25}\n";
+    const std::uint64_t n = 40;
+    const PackRun<3> run = pack_run<3>(particles, setup, n, 4);
+    check_packing<3>(run, setup, n);
+  }
+}
+
 // ---- reproducibility -------------------------------------------------------------------------
 
 template <int D>
