@@ -9,7 +9,9 @@
 #include <cstring>
 #include <limits>
 
+#include "contact/ellipsoid_gap.hpp"
 #include "contact/segment_distance.hpp"
+#include "shapes/ellipsoid_shape.hpp"
 #include "shapes/convex_polytope_shape.hpp"
 #include "shapes/sphere_shape.hpp"
 #include "shapes/spherocylinder_shape.hpp"
@@ -293,6 +295,34 @@ void tighten_by_pulls(const fcl::CollisionGeometryd* ga, const fcl::Transform3d&
   if (pulled_ok && pulled_gap.value > g.value) g = pulled_gap;  // s(u) is a strict lower bound
 }
 
+/// Ellipsoids (ellipses) against ellipsoids and balls: Newton on the support functions
+/// (contact/ellipsoid_gap.hpp) instead of FCL's GJK.
+template <int D>
+SmoothConvexBody<D> ellipsoid_body(const Particle<D>& p) {
+  SmoothConvexBody<D> s;
+  s.center = p.pose.position;
+  s.M = p.pose.rotation * static_cast<const EllipsoidShape<D>&>(*p.shape).semi_axes().asDiagonal();
+  return s;
+}
+
+template <int D>
+SmoothConvexBody<D> ball_body(const Particle<D>& p) {
+  SmoothConvexBody<D> s;
+  s.center = p.pose.position;
+  s.rho = p.bounding_radius();
+  return s;
+}
+
+template <int D>
+Gap<D> ellipsoid_ellipsoid(const Particle<D>& a, const Particle<D>& b) {
+  return smooth_convex_gap<D>(ellipsoid_body(a), ellipsoid_body(b));
+}
+
+template <int D>
+Gap<D> sphere_ellipsoid(const Particle<D>& a, const Particle<D>& b) {
+  return smooth_convex_gap<D>(ball_body(a), ellipsoid_body(b));
+}
+
 bool is_ball_made(const char* kind) {
   const std::string k = kind;
   return k == "sphere" || k == "cluster" || k == "spherocylinder";
@@ -308,6 +338,8 @@ NarrowPhase<D>::NarrowPhase() {
   add_pair("cluster", "cluster", ball_union_gap<D>);
   add_pair("cluster", "sphere", ball_union_gap<D>);
   add_pair("cluster", "spherocylinder", ball_union_gap<D>);
+  add_pair(EllipsoidShape<D>::kKind, EllipsoidShape<D>::kKind, ellipsoid_ellipsoid<D>);
+  add_pair("sphere", EllipsoidShape<D>::kKind, sphere_ellipsoid<D>);
 }
 
 template <int D>
