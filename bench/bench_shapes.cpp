@@ -1,5 +1,5 @@
-// The general-shape machinery: narrow-phase gaps (analytic capsule path, FCL polytope path) and
-// one minimisation solve (a capsule touching three capsules), per algorithm.
+// The general-shape machinery: narrow-phase gaps (analytic capsule and ellipsoid paths, FCL
+// polytope path) and one minimisation solve (a capsule touching three capsules), per algorithm.
 // A separate executable: frontpack_bench (spheres) must link no FCL and no NLopt.
 #include <benchmark/benchmark.h>
 
@@ -9,6 +9,7 @@
 #include "contact/minimisation_solver.hpp"
 #include "core/sampling/rng.hpp"
 #include "shapes/shape_registry.hpp"
+#include "shapes/ellipsoid_shape.hpp"
 #include "shapes/spherocylinder_shape.hpp"
 
 namespace {
@@ -65,6 +66,20 @@ void BM_GapPolyhedronFcl(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_GapPolyhedronFcl)->Arg(15)->Arg(60);
+
+/// Ellipsoids [1, 0.7, 0.5] (contact/ellipsoid_gap.hpp: Newton on the support functions); the
+/// cube side sets the overlapping share (15: most pairs overlap, 60: most are apart).
+void BM_GapEllipsoid(benchmark::State& state) {
+  const auto ps = scatter(std::make_shared<EllipsoidShape<3>>(Vec3(1, 0.7, 0.5)), 1024, static_cast<double>(state.range(0)) / 10.0, 3);
+  NarrowPhase<3> np;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(np.gap(ps[k & 1023], ps[(k + 1) & 1023]));
+    ++k;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_GapEllipsoid)->Arg(15)->Arg(60);
 
 /// One contact problem: a capsule (aspect ratio 0.5) touching three capsules that touch a known
 /// position; args: algorithm index (slsqp, lbfgs, nelder-mead).

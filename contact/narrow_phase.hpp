@@ -5,8 +5,9 @@
 // the penetration depth), > 0 apart, and |∇ω| = 1 wherever it is smooth.
 //
 // Analytic fast paths (registered by kind pair): sphere-sphere, sphere-spherocylinder and
-// spherocylinder-spherocylinder through segment distance (paper 004 Eq. 5-6), and clusters of
-// balls against those. Every other pair goes through FCL's distance query with the libccd GJK
+// spherocylinder-spherocylinder through segment distance (paper 004 Eq. 5-6), clusters of
+// balls against those, and ellipsoids against ellipsoids and spheres (Newton on the support
+// functions, ellipsoid_gap.hpp). Every other pair goes through FCL's distance query with the libccd GJK
 // solver (exact when apart; the INDEP solver is wrong, see dependencies.md). On overlap the depth
 // comes from our own separating-axis search over support functions, not from FCL's EPA, whose
 // assertion aborts the process on some touching polytopes (seen packing cubes). Clusters are

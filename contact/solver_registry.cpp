@@ -3,12 +3,14 @@
 #include <algorithm>
 
 #include "contact/ball_wrapper_solver.hpp"
+#include "contact/ellipsoid_contact_solver.hpp"
 #include "contact/minimisation_solver.hpp"
 #include "contact/polygon_wrapper_solver.hpp"
 #include "contact/polytope_wrapper_solver.hpp"
 #include "contact/sphere_contact_solver.hpp"
 #include "shapes/cluster_shape.hpp"
 #include "shapes/convex_polytope_shape.hpp"
+#include "shapes/ellipsoid_shape.hpp"
 #include "shapes/sphere_shape.hpp"
 #include "shapes/spherocylinder_shape.hpp"
 
@@ -31,6 +33,14 @@ SolverRegistry<D>::SolverRegistry(const NarrowPhase<D>& narrow_phase, const Mini
     add_pair(ConvexPolytopeShape<3>::kKind, ConvexPolytopeShape<3>::kKind, wrapper);
     add_pair(kPlaneWall, ConvexPolytopeShape<3>::kKind, wrapper);
     add_pair(kCornerWall, ConvexPolytopeShape<3>::kKind, wrapper);
+  }
+  {  // ellipsoids (ellipses) with spheres (disks) and plane walls: Newton on the wrappers
+    const char* smooth[] = {EllipsoidShape<D>::kKind, SphereShape<D>::kKind};
+    auto solver = std::make_shared<EllipsoidContactSolver<D>>();
+    for (const char* mobile : smooth) {
+      add_pair(kPlaneWall, mobile, solver);
+      for (const char* fixed : smooth) add_pair(fixed, mobile, solver);
+    }
   }
   const char* balls[] = {SphereShape<D>::kKind, ClusterShape<D>::kKind};
   auto wrapper = std::make_shared<BallWrapperSolver<D>>();

@@ -4,10 +4,11 @@
 // surface (kPlaneWall, ...), so a solver can take plane walls and leave curved ones.
 // Minimisation is the default for every pair. A problem goes to the most recently registered
 // solver that is registered for EVERY (fixed, mobile) pair of the problem, else to the default.
-// In 2D the polygon wrapper covers disks, stadiums, polygons, clusters and walls; the ball
-// wrapper, registered after it, takes spheres (disks) and clusters with walls; the analytic
-// sphere solver, registered last, takes spheres and walls alone. A 3D sphere placed against two
-// spheres and a capsule still goes to minimisation.
+// In 2D the polygon wrapper covers disks, stadiums, polygons, clusters and walls; in 3D the
+// polytope wrapper polyhedra and plane walls; the ellipsoid solver, registered after them, takes
+// ellipsoids (ellipses), spheres and plane walls; the ball wrapper spheres (disks) and clusters
+// with walls; the analytic sphere solver, registered last, spheres and walls alone. A 3D sphere
+// placed against two spheres and a capsule still goes to minimisation.
 #include <map>
 #include <memory>
 #include <span>
@@ -32,8 +33,9 @@ template <int D>
 class SolverRegistry {
  public:
   /// The default registry: minimisation everywhere; in 2D the polygon wrapper for rounded convex
-  /// cores; the ball wrapper for spheres, clusters and walls; the analytic sphere solver for
-  /// spheres and walls.
+  /// cores, in 3D the polytope wrapper for polyhedra; the ellipsoid solver for ellipsoids, spheres
+  /// and plane walls; the ball wrapper for spheres, clusters and walls; the analytic sphere
+  /// solver for spheres and walls.
   /// With `closed_form` false, minimisation for every problem (no solver registered).
   SolverRegistry(const NarrowPhase<D>& narrow_phase, const MinimisationOptions& options, bool closed_form = true);
 

@@ -640,7 +640,7 @@ Mat<D> random_rotation(Rng& rng) {
 inline double log_uniform(Rng& rng, double lo, double hi) { return lo * std::pow(hi / lo, rng.uniform01()); }
 
 /// What a fixed body or the mobile is. The last three are walls (fixed bodies only).
-enum class Kind { Sphere, Capsule, ThinCapsule, Polytope, Ellipsoid, Cluster, Cylinder, Plane, SphereWall, CylinderWall };
+enum class Kind { Sphere, Capsule, ThinCapsule, Polytope, Ellipsoid, ThinEllipsoid, Cluster, Cylinder, Plane, SphereWall, CylinderWall };
 
 inline const char* kind_name(Kind k) {
   switch (k) {
@@ -649,6 +649,7 @@ inline const char* kind_name(Kind k) {
     case Kind::ThinCapsule: return "thin-capsule";
     case Kind::Polytope: return "polytope";
     case Kind::Ellipsoid: return "ellipsoid";
+    case Kind::ThinEllipsoid: return "thin-ellipsoid";
     case Kind::Cluster: return "cluster";
     case Kind::Cylinder: return "cylinder";
     case Kind::Plane: return "plane";
@@ -706,9 +707,15 @@ ShapePtr<D> random_shape(Kind k, double size, Rng& rng) {
         return family_prototype<D>("polyhedron", p)->scaled(size);
       }
     }
+    case Kind::ThinEllipsoid:  // semi-axes 1 : 0.05 (aspect ratio 0.05), the middle one between
     case Kind::Ellipsoid: {
       std::vector<double> axes;
       for (int i = 0; i < D; ++i) axes.push_back(rng.uniform(0.4, 1.0));
+      if (k == Kind::ThinEllipsoid) {
+        axes.assign(static_cast<std::size_t>(D), 1.0);
+        axes[static_cast<std::size_t>(D - 1)] = 0.05;
+        if (D == 3) axes[1] = std::pow(0.05, rng.uniform01());
+      }
       p.lists["axes"] = axes;
       return family_prototype<D>(D == 2 ? "ellipse" : "ellipsoid", p)->scaled(size);
     }

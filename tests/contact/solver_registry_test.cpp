@@ -1,12 +1,14 @@
 // The solver registry (contact/solver_registry.cpp): which contact solver a problem goes to.
 // Minimisation is the default for every pair; a registered solver is used only when EVERY pair
 // of the problem has it, the latest registered first: the analytic sphere solver for spheres and
-// walls alone, the ball wrapper where clusters join them.
+// walls alone, the ball wrapper where clusters join them, the ellipsoid solver where ellipsoids
+// do (with spheres and plane walls); an ellipsoid with a cluster: minimisation.
 #include <gtest/gtest.h>
 
 #include <atomic>
 
 #include "contact/ball_wrapper_solver.hpp"
+#include "contact/ellipsoid_contact_solver.hpp"
 #include "contact/polygon_wrapper_solver.hpp"
 #include "contact/solver_registry.hpp"
 #include "contact/sphere_contact_solver.hpp"
@@ -22,6 +24,10 @@ bool is_analytic(const ContactSolver<D>& s) {
 template <int D>
 bool is_ball_wrapper(const ContactSolver<D>& s) {
   return dynamic_cast<const BallWrapperSolver<D>*>(&s) != nullptr;
+}
+template <int D>
+bool is_ellipsoid_solver(const ContactSolver<D>& s) {
+  return dynamic_cast<const EllipsoidContactSolver<D>*>(&s) != nullptr;
 }
 bool is_polygon_wrapper(const ContactSolver<2>& s) { return dynamic_cast<const PolygonWrapperSolver*>(&s) != nullptr; }
 template <int D>
@@ -53,7 +59,7 @@ void picks_round() {
   const SolverRegistry<D> reg(np, MinimisationOptions{});
   ASSERT_TRUE(is_minimisation<D>(reg.default_solver()));
   const auto sphere = std::make_shared<SphereShape<D>>(1.0);
-  const auto ellipsoid = std::make_shared<EllipsoidShape<D>>(Vec<D>::Constant(0.5));  // no wrapper reaches it
+  const auto ellipsoid = std::make_shared<EllipsoidShape<D>>(Vec<D>::Constant(0.5));
   const Mobile<D> sphere_mobile = Mobile<D>::of_shape(sphere, Mat<D>::Identity());
   const Mobile<D> ellipsoid_mobile = Mobile<D>::of_shape(ellipsoid, Mat<D>::Identity());
 
@@ -72,22 +78,22 @@ void picks_round() {
   for (int i = 0; i < D; ++i) f[i] = Body<D>::sphere(spheres[i].pose.position, 1.0, i);
   EXPECT_TRUE(is_analytic<D>(reg.pick(f, sphere_mobile)));
 
-  // An ellipsoid anywhere: minimisation (mobile, one fixed body, all fixed bodies).
-  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, ellipsoid_mobile)));
+  // An ellipsoid with spheres (mobile, one fixed body, all fixed bodies): the ellipsoid solver.
+  EXPECT_TRUE(is_ellipsoid_solver<D>(reg.pick(f, ellipsoid_mobile)));
   f[D - 1] = Body<D>::of_particle(ellipsoids[D - 1], D - 1);
-  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, sphere_mobile)));
+  EXPECT_TRUE(is_ellipsoid_solver<D>(reg.pick(f, sphere_mobile)));
   for (int i = 0; i < D; ++i) f[i] = Body<D>::of_particle(ellipsoids[i], i);
-  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, sphere_mobile)));
-  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, ellipsoid_mobile)));
+  EXPECT_TRUE(is_ellipsoid_solver<D>(reg.pick(f, sphere_mobile)));
+  EXPECT_TRUE(is_ellipsoid_solver<D>(reg.pick(f, ellipsoid_mobile)));
 
-  // A wall and spheres: analytic; a wall and an ellipsoid mobile: minimisation.
+  // A wall and spheres: analytic; a plane wall and an ellipsoid: the ellipsoid solver.
   const Wall<D> wall = Wall<D>::plane(Vec<D>::Zero(), Vec<D>::UnitX());
   for (int i = 0; i < D; ++i) f[i] = Body<D>::of_particle(spheres[i], i);
   f[0] = Body<D>::of_wall(wall);
   EXPECT_TRUE(is_analytic<D>(reg.pick(f, sphere_mobile)));
-  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, ellipsoid_mobile)));
+  EXPECT_TRUE(is_ellipsoid_solver<D>(reg.pick(f, ellipsoid_mobile)));
   f[D - 1] = Body<D>::of_particle(ellipsoids[D - 1], D - 1);
-  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, sphere_mobile)));
+  EXPECT_TRUE(is_ellipsoid_solver<D>(reg.pick(f, sphere_mobile)));
 
   // A plain sphere mobile (radius only, the sphere fast path's form) against spheres: the
   // analytic solver, which needs no shape (the minimisation solver cannot solve it).
@@ -110,8 +116,8 @@ void picks_round() {
   EXPECT_TRUE(is_ball_wrapper<D>(reg.pick(f, sphere_mobile)));
   EXPECT_TRUE(is_ball_wrapper<D>(reg.pick(f, plain_sphere<D>(1.0))));
   f[D - 1] = Body<D>::of_particle(ellipsoids[D - 1], D - 1);
-  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, cluster_mobile)));
-  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, sphere_mobile)));
+  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, cluster_mobile)));  // no solver takes ellipsoid and cluster
+  EXPECT_TRUE(is_ellipsoid_solver<D>(reg.pick(f, sphere_mobile)));
 }
 
 TEST(SolverRegistry, Picks2D) { picks_round<2>(); }
@@ -141,7 +147,7 @@ void override_round() {
   NarrowPhase<D> np;
   SolverRegistry<D> reg(np, MinimisationOptions{});
   const auto sphere = std::make_shared<SphereShape<D>>(1.0);
-  const auto ellipsoid = std::make_shared<EllipsoidShape<D>>(Vec<D>::Constant(0.5));  // no wrapper reaches it
+  const auto ellipsoid = std::make_shared<EllipsoidShape<D>>(Vec<D>::Constant(0.5));
   std::array<Particle<D>, D> spheres, ellipsoids;
   for (int i = 0; i < D; ++i) {
     Vec<D> x = Vec<D>::Zero();
@@ -162,7 +168,7 @@ void override_round() {
   reg.pick(f, ellipsoid_mobile).solve(f, ellipsoid_mobile, out);
   EXPECT_EQ(counting->calls, 1);
   f[0] = Body<D>::of_particle(spheres[0], 0);
-  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, ellipsoid_mobile)));  // sphere-ellipsoid has no override
+  EXPECT_TRUE(is_ellipsoid_solver<D>(reg.pick(f, ellipsoid_mobile)));  // sphere-ellipsoid has no override
   reg.add_pair("sphere", EllipsoidShape<D>::kKind, counting);            // now every pair has the same one
   EXPECT_EQ(&reg.pick(f, ellipsoid_mobile), counting.get());
 
@@ -178,35 +184,44 @@ void override_round() {
   reg.add_pair(kPlaneWall, "sphere", other);  // now it covers both
   EXPECT_EQ(&reg.pick(f, sphere_mobile), other.get());
 
-  // A new default: what no registered solver covers (a sphere against an ellipsoid).
+  // A new default: what no registered solver covers (a cluster against an ellipsoid).
   auto fallback = std::make_shared<CountingSolver<D>>();
   reg.set_default(fallback);
   EXPECT_EQ(&reg.default_solver(), fallback.get());
   f[D - 1] = Body<D>::of_particle(ellipsoids[D - 1], D - 1);
-  EXPECT_EQ(&reg.pick(f, sphere_mobile), fallback.get());
+  std::vector<Ball<D>> members(2);
+  members[1].center[0] = 1.0;
+  members[0].radius = members[1].radius = 0.6;
+  const Mobile<D> cluster_mobile = Mobile<D>::of_shape(std::make_shared<ClusterShape<D>>(members), Mat<D>::Identity());
+  EXPECT_EQ(&reg.pick(f, cluster_mobile), fallback.get());
 }
 
 TEST(SolverRegistry, OverridesAPair2D) { override_round<2>(); }
 TEST(SolverRegistry, OverridesAPair3D) { override_round<3>(); }
 
-/// End to end: the picked solver solves a wall + spheres problem and an ellipsoid problem, and
+/// End to end: the picked solver solves a wall + spheres problem (analytic), a wall + spheres
+/// problem of an ellipsoid (the ellipsoid solver) and one with a cluster too (minimisation), and
 /// every position passes the independent check.
 template <int D>
 void solves_round(std::uint64_t seed) {
   NarrowPhase<D> np;
   const SolverRegistry<D> reg(np, MinimisationOptions{});
   Rng rng(seed);
-  int analytic = 0, minimisation = 0, positions = 0;
-  for (int t = 0; t < 20; ++t) {
+  int analytic = 0, smooth = 0, minimisation = 0, positions = 0;
+  for (int t = 0; t < 30; ++t) {
     std::array<Kind, D> kinds;
     kinds.fill(Kind::Sphere);
     kinds[0] = Kind::Plane;
-    const bool ellipsoid = t % 2;
+    const bool ellipsoid = t % 3 != 0, cluster = t % 3 == 2;
+    if (cluster) kinds[D - 1] = Kind::Cluster;
     Problem<D> pb;
     if (!construct_problem<D>(pb, np, ellipsoid ? Kind::Ellipsoid : Kind::Sphere, kinds, Sizes{}, rng)) continue;
     const ContactSolver<D>& s = reg.pick(pb.span(), pb.mobile());
     EXPECT_EQ(is_analytic<D>(s), !ellipsoid);
+    EXPECT_EQ(is_ellipsoid_solver<D>(s), ellipsoid && !cluster);
+    EXPECT_EQ(is_minimisation<D>(s), cluster);
     analytic += is_analytic<D>(s);
+    smooth += is_ellipsoid_solver<D>(s);
     minimisation += is_minimisation<D>(s);
     std::array<Placement<D>, ContactSolver<D>::kMaxSolutions> out;
     const int n = s.solve(pb.span(), pb.mobile(), out);
@@ -215,8 +230,9 @@ void solves_round(std::uint64_t seed) {
     EXPECT_GT(n, 0) << pb.literal();
   }
   EXPECT_GT(analytic, 5);
+  EXPECT_GT(smooth, 5);
   EXPECT_GT(minimisation, 5);
-  EXPECT_GT(positions, 20);
+  EXPECT_GT(positions, 30);
 }
 
 TEST(SolverRegistry, PickedSolversSolve2D) { solves_round<2>(901); }

@@ -1,0 +1,255 @@
+#include "contact/ellipsoid_contact_solver.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+
+#include "contact/sphere_contact_solver.hpp"
+#include "shapes/ellipsoid_shape.hpp"
+
+namespace fp {
+namespace {
+
+/// A smooth convex body {c + M u + rho w}: Q = M M^T (0 for a ball), rho (0 for an ellipsoid).
+template <int D>
+struct Smooth {
+  Vec<D> c = Vec<D>::Zero();
+  Mat<D> Q = Mat<D>::Zero();
+  double rho = 0;
+  double circumscribed = 0;  ///< radius of its circumscribed sphere about c
+  double equivalent = 0;     ///< radius of the ball of the same measure
+};
+
+template <int D>
+Smooth<D> smooth_of(const Shape<D>& s, const Mat<D>& R, const Vec<D>& c) {
+  Smooth<D> b;
+  b.c = c;
+  if (std::strcmp(s.kind(), EllipsoidShape<D>::kKind) == 0) {
+    const Vec<D>& axes = static_cast<const EllipsoidShape<D>&>(s).semi_axes();
+    const Mat<D> M = R * axes.asDiagonal();
+    b.Q = M * M.transpose();
+    b.circumscribed = axes.maxCoeff();
+    b.equivalent = std::pow(axes.prod(), 1.0 / D);
+  } else {  // a sphere (disk)
+    b.rho = s.bounding_radius();
+    b.circumscribed = b.equivalent = b.rho;
+  }
+  return b;
+}
+
+template <int D>
+Smooth<D> ball(const Vec<D>& c, double r) {
+  Smooth<D> b;
+  b.c = c;
+  b.rho = b.circumscribed = b.equivalent = r;
+  return b;
+}
+
+/// Adds the gradient and Hessian of sqrt(n^T Q n) at the unit n.
+template <int D>
+void add_norm(const Mat<D>& Q, const Vec<D>& n, Vec<D>& P, Mat<D>& H) {
+  const Vec<D> q = Q * n;
+  const double N2 = n.dot(q);
+  if (!(N2 > 0)) return;
+  const double N = std::sqrt(N2);
+  P += q / N;
+  H += (Q - q * q.transpose() / N2) / N;
+}
+
+/// The wrapper of fixed body F for the mobile A: its boundary point of outward normal n (unit)
+/// and the Hessian of its support function there (d P / d n on the tangent plane).
+template <int D>
+void wrapper_point(const Smooth<D>& F, const Smooth<D>& A, const Vec<D>& n, Vec<D>& P, Mat<D>& H) {
+  P = F.c;
+  H.setZero();
+  add_norm<D>(F.Q, n, P, H);
+  add_norm<D>(A.Q, n, P, H);
+  const double rho = F.rho + A.rho;
+  P += rho * n;
+  H += rho * (Mat<D>::Identity() - n * n.transpose());
+}
+
+template <int D>
+Eigen::Matrix<double, D, D - 1> tangent_basis(const Vec<D>& n) {
+  Eigen::Matrix<double, D, D - 1> T;
+  if constexpr (D == 2) {
+    T.col(0) = Vec2(-n.y(), n.x());
+  } else {
+    const Vec3 e1 = (std::abs(n.x()) < 0.6 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
+    T.col(0) = e1;
+    T.col(1) = n.cross(e1);
+  }
+  return T;
+}
+
+/// One fixed body of the problem: a curved wrapper (x = P(n)) or an offset plane (w.x = b).
+template <int D>
+struct Locus {
+  bool plane = false;
+  Smooth<D> body;            ///< curved
+  Vec<D> w = Vec<D>::Zero();  ///< plane: inward unit normal
+  double b = 0;              ///< plane: offset of the mobile's centre
+};
+
+constexpr int kMaxUnknowns = 9;  // 3D, three curved bodies: x and three normals of 2 parameters
+using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxUnknowns, 1>;
+using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxUnknowns, kMaxUnknowns>;
+
+/// Residual of the system at (x, normals): x - P_i(n_i) for curved loci, w.x - b for planes.
+template <int D>
+Vector residual(const std::array<Locus<D>, D>& loci, const Smooth<D>& A, const Vec<D>& x, const std::array<Vec<D>, D>& n, int rows) {
+  Vector r(rows);
+  int row = 0;
+  for (int i = 0; i < D; ++i) {
+    if (loci[i].plane) {
+      r(row++) = loci[i].w.dot(x) - loci[i].b;
+    } else {
+      Vec<D> P;
+      Mat<D> H;
+      wrapper_point<D>(loci[i].body, A, n[i], P, H);
+      r.template segment<D>(row) = x - P;
+      row += D;
+    }
+  }
+  return r;
+}
+
+/// Newton's method on the system from (x, n); true when it converged (|residual| <= tol).
+template <int D>
+bool newton(const std::array<Locus<D>, D>& loci, const Smooth<D>& A, Vec<D>& x, std::array<Vec<D>, D>& n, double tol) {
+  int curved = 0;
+  for (const Locus<D>& l : loci) curved += !l.plane;
+  const int unknowns = D + (D - 1) * curved;
+  const int rows = D * curved + (D - curved);
+  Vector r = residual<D>(loci, A, x, n, rows);
+  double norm = r.norm();
+  const double slow = 1e8 * tol;  // still this far after kSlowAfter iterations: not converging
+  for (int it = 0; it < 30; ++it) {
+    if (norm <= tol) return true;
+    // Most problems of the pair scan have no solution: Newton wanders there. From a start in a
+    // solution's basin it converges quadratically, within a few iterations.
+    if (it >= 12 && norm > slow) return false;
+    Matrix J = Matrix::Zero(rows, unknowns);
+    std::array<Eigen::Matrix<double, D, D - 1>, D> T;
+    int row = 0, col = D;
+    for (int i = 0; i < D; ++i) {
+      if (loci[i].plane) {
+        J.block(row, 0, 1, D) = loci[i].w.transpose();
+        ++row;
+        continue;
+      }
+      Vec<D> P;
+      Mat<D> H;
+      wrapper_point<D>(loci[i].body, A, n[i], P, H);
+      T[i] = tangent_basis<D>(n[i]);
+      J.block(row, 0, D, D) = Mat<D>::Identity();
+      J.block(row, col, D, D - 1) = -H * T[i];
+      row += D;
+      col += D - 1;
+    }
+    const Eigen::FullPivLU<Matrix> lu(J);
+    if (lu.rank() < unknowns) return false;  // degenerate: parallel planes, coincident wrappers
+    Vector step = lu.solve(-r);
+    bool improved = false;
+    for (int halvings = 0; halvings < 12 && !improved; ++halvings) {
+      Vec<D> x1 = x + step.template head<D>();
+      std::array<Vec<D>, D> n1 = n;
+      int c = D;
+      for (int i = 0; i < D; ++i) {
+        if (loci[i].plane) continue;
+        n1[i] = (n[i] + T[i] * step.segment(c, D - 1)).normalized();
+        c += D - 1;
+      }
+      const Vector r1 = residual<D>(loci, A, x1, n1, rows);
+      const double norm1 = r1.norm();
+      if (norm1 < norm) {
+        x = x1, n = n1, r = r1, norm = norm1;
+        improved = true;
+      } else {
+        step *= 0.5;
+      }
+    }
+    if (!improved) return norm <= tol;
+  }
+  return norm <= tol;
+}
+
+}  // namespace
+
+template <int D>
+int EllipsoidContactSolver<D>::solve(std::span<const Body<D>> fixed, const Mobile<D>& mobile, std::span<Placement<D>> out) const {
+  if (fixed.size() != static_cast<std::size_t>(D) || out.empty()) return 0;
+  const Smooth<D> A = mobile.shape ? smooth_of<D>(*mobile.shape, mobile.rotation, Vec<D>::Zero()) : ball<D>(Vec<D>::Zero(), mobile.radius);
+  std::array<Locus<D>, D> loci;
+  // Work relative to the first particle body's centre (coordinates far from the origin lose
+  // nothing), and measure the residual on the scale of the bodies.
+  Vec<D> origin = Vec<D>::Zero();
+  for (const Body<D>& b : fixed)
+    if (!b.is_wall()) { origin = b.center; break; }
+  double size = A.circumscribed;
+  for (int i = 0; i < D; ++i) {
+    const Body<D>& b = fixed[static_cast<std::size_t>(i)];
+    Locus<D>& l = loci[static_cast<std::size_t>(i)];
+    if (b.is_wall()) {
+      if (b.wall->kind != WallKind::Plane) return 0;  // registered for plane walls only
+      l.plane = true;
+      l.w = b.wall->normal;
+      // The mobile touches the plane from the container side: w.(x - p) = its extent along -w.
+      l.b = l.w.dot(b.wall->point - origin) + std::sqrt(std::max(0.0, l.w.dot(A.Q * l.w))) + A.rho;
+    } else {
+      l.body = b.shaped ? smooth_of<D>(*b.shaped->shape, b.shaped->pose.rotation, Vec<D>(b.center - origin))
+                        : ball<D>(Vec<D>(b.center - origin), b.radius);
+      size = std::min(size, l.body.circumscribed);
+    }
+  }
+  const double tol = 1e-12 * size;
+
+  // Starts: the positions of the equivalent-sphere problems (circumscribed, then same-measure radii).
+  std::array<Body<D>, D> spheres;
+  std::array<Placement<D>, ContactSolver<D>::kMaxSolutions> starts;
+  const SphereContactSolver<D> sphere_solver;
+  int found = 0;
+  for (const bool circumscribed : {true, false}) {
+    for (int i = 0; i < D; ++i) {
+      const Locus<D>& l = loci[static_cast<std::size_t>(i)];
+      const Body<D>& b = fixed[static_cast<std::size_t>(i)];
+      spheres[static_cast<std::size_t>(i)] =
+          l.plane ? b : Body<D>::sphere(l.body.c, circumscribed ? l.body.circumscribed : l.body.equivalent);
+    }
+    // The sphere solver sees the walls in world coordinates: shift them into the working frame.
+    std::array<Wall<D>, D> walls;
+    for (int i = 0; i < D; ++i)
+      if (loci[static_cast<std::size_t>(i)].plane) {
+        walls[static_cast<std::size_t>(i)] = *fixed[static_cast<std::size_t>(i)].wall;
+        walls[static_cast<std::size_t>(i)].point -= origin;
+        spheres[static_cast<std::size_t>(i)] = Body<D>::of_wall(walls[static_cast<std::size_t>(i)]);
+      }
+    Mobile<D> ball_mobile;
+    ball_mobile.radius = circumscribed ? A.circumscribed : A.equivalent;
+    const int m = sphere_solver.solve(std::span<const Body<D>>(spheres.data(), D), ball_mobile, starts);
+    for (int s = 0; s < m; ++s) {
+      Vec<D> x = starts[static_cast<std::size_t>(s)].position;
+      std::array<Vec<D>, D> n;
+      for (int i = 0; i < D; ++i) {
+        const Locus<D>& l = loci[static_cast<std::size_t>(i)];
+        const Vec<D> d = l.plane ? Vec<D>(l.w) : Vec<D>(x - l.body.c);
+        n[static_cast<std::size_t>(i)] = d.norm() > 0 ? Vec<D>(d.normalized()) : Vec<D>(Vec<D>::UnitX());
+      }
+      if (!newton<D>(loci, A, x, n, tol)) continue;
+      const Vec<D> world = x + origin;
+      bool seen = false;
+      for (int k = 0; k < found && !seen; ++k) seen = (out[static_cast<std::size_t>(k)].position - world).norm() <= 1e-8 * size;
+      if (seen) continue;
+      out[static_cast<std::size_t>(found++)].position = world;
+      if (found == static_cast<int>(out.size())) return found;
+    }
+  }
+  return found;
+}
+
+template class EllipsoidContactSolver<2>;
+template class EllipsoidContactSolver<3>;
+
+}  // namespace fp
