@@ -22,6 +22,16 @@ struct SmoothConvexBody {
   Vec<D> center;
   Mat<D> M = Mat<D>::Zero();  ///< the linear part: R diag(semi-axes) for an ellipsoid, 0 for a ball
   double rho = 0.0;           ///< rounding radius: a ball's radius
+  /// An ellipsoid's M^-1 = diag(1 / semi-axes) R^T and least semi-axis (depth_inside uses them).
+  Mat<D> M_inverse = Mat<D>::Zero();
+  double least_axis = 0.0;
+
+  /// A lower bound of how deep x lies inside (<= 0: not inside): for an ellipsoid, with
+  /// y = M^-1 (x - c), the boundary is at least (1 - |y|) x the least semi-axis away.
+  double depth_inside(const Vec<D>& x) const {
+    if (least_axis > 0) return (1 - (M_inverse * (x - center)).norm()) * least_axis;
+    return rho - (x - center).norm();
+  }
 };
 
 namespace ellipsoid_gap_detail {
@@ -144,6 +154,30 @@ Gap<D> smooth_convex_gap(const SmoothConvexBody<D>& a, const SmoothConvexBody<D>
       }
   }
   return {best, best_n};
+}
+
+/// gap(a, b) < -allowed, decided without the multi-start of smooth_convex_gap where it can be:
+/// one ascent from the centre line that reaches -allowed settles "no" (every f(n) is a lower
+/// bound of the gap); a point at depth d > allowed inside both settles "yes" (the intersection
+/// then holds a ball of radius d, so separating them takes a translation of at least 2d). The
+/// points tried: both centres and the middle of the two support points of that ascent.
+template <int D>
+bool smooth_convex_overlap_beyond(const SmoothConvexBody<D>& a, const SmoothConvexBody<D>& b, double allowed) {
+  using namespace ellipsoid_gap_detail;
+  const Vec<D> d = b.center - a.center;
+  const Mat<D> Qa = a.M * a.M.transpose(), Qb = b.M * b.M.transpose();
+  const double dn = d.norm();
+  Vec<D> n = dn > 0 ? Vec<D>(d / dn) : Vec<D>(Vec<D>::UnitX());
+  if (maximise_from<D>(d, Qa, Qb, a.rho + b.rho, n) >= -allowed) return false;
+  auto support_offset = [](const Mat<D>& Q, double rho, const Vec<D>& u) {
+    const Vec<D> q = Q * u;
+    const double N = std::sqrt(std::max(0.0, u.dot(q)));
+    return Vec<D>((N > 0 ? Vec<D>(q / N) : Vec<D>(Vec<D>::Zero())) + rho * u);
+  };
+  const Vec<D> middle = 0.5 * (a.center + support_offset(Qa, a.rho, n) + b.center - support_offset(Qb, b.rho, n));
+  for (const Vec<D>& x : {a.center, b.center, middle})
+    if (std::min(a.depth_inside(x), b.depth_inside(x)) > allowed) return true;
+  return smooth_convex_gap<D>(a, b).value < -allowed;
 }
 
 }  // namespace fp

@@ -301,7 +301,10 @@ template <int D>
 SmoothConvexBody<D> ellipsoid_body(const Particle<D>& p) {
   SmoothConvexBody<D> s;
   s.center = p.pose.position;
-  s.M = p.pose.rotation * static_cast<const EllipsoidShape<D>&>(*p.shape).semi_axes().asDiagonal();
+  const Vec<D>& axes = static_cast<const EllipsoidShape<D>&>(*p.shape).semi_axes();
+  s.M = p.pose.rotation * axes.asDiagonal();
+  s.M_inverse = axes.cwiseInverse().asDiagonal() * p.pose.rotation.transpose();
+  s.least_axis = axes.minCoeff();
   return s;
 }
 
@@ -321,6 +324,20 @@ Gap<D> ellipsoid_ellipsoid(const Particle<D>& a, const Particle<D>& b) {
 template <int D>
 Gap<D> sphere_ellipsoid(const Particle<D>& a, const Particle<D>& b) {
   return smooth_convex_gap<D>(ball_body(a), ellipsoid_body(b));
+}
+
+/// An ellipsoid with an ellipsoid or a sphere: the pairs of smooth_convex_gap; the body of each.
+template <int D>
+bool smooth_pair(const Particle<D>& a, const Particle<D>& b) {
+  const bool ea = std::strcmp(a.shape->kind(), EllipsoidShape<D>::kKind) == 0;
+  const bool eb = std::strcmp(b.shape->kind(), EllipsoidShape<D>::kKind) == 0;
+  return (ea && (eb || std::strcmp(b.shape->kind(), SphereShape<D>::kKind) == 0)) ||
+         (eb && std::strcmp(a.shape->kind(), SphereShape<D>::kKind) == 0);
+}
+
+template <int D>
+SmoothConvexBody<D> smooth_body(const Particle<D>& p) {
+  return std::strcmp(p.shape->kind(), EllipsoidShape<D>::kKind) == 0 ? ellipsoid_body(p) : ball_body(p);
 }
 
 bool is_ball_made(const char* kind) {
@@ -430,6 +447,7 @@ bool NarrowPhase<D>::overlap_beyond(const Particle<D>& a, const Particle<D>& b, 
     const FclShape& fb = fcl_of(b.shape);
     if (fa.convex_polytope && fb.convex_polytope) return !(polytope_separation(a, fa, b, fb, -allowed, true) >= -allowed);
   }
+  if (smooth_pair(a, b)) return smooth_convex_overlap_beyond<D>(smooth_body(a), smooth_body(b), allowed);
   return gap(a, b).value < -allowed;
 }
 

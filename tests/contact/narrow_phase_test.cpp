@@ -222,6 +222,11 @@ TEST(NarrowPhase, OverlapAndReachPredicatesAgreeWithTheReference) {
   predicates_round<3>(Kind::Polytope, Kind::Polytope, 200, 52, 1e-12);
   predicates_round<3>(Kind::Sphere, Kind::Polytope, 60, 53, 5e-8);  // the general path
   predicates_round<3>(Kind::Cluster, Kind::Polytope, 60, 54, 5e-8);
+  // Ellipsoids with ellipsoids and spheres: one ascent, a point deep inside both, or the full search.
+  predicates_round<2>(Kind::Ellipsoid, Kind::Ellipsoid, 200, 55, 1e-12);
+  predicates_round<3>(Kind::Ellipsoid, Kind::Ellipsoid, 200, 56, 1e-12);
+  predicates_round<3>(Kind::Sphere, Kind::Ellipsoid, 200, 57, 1e-12);
+  predicates_round<3>(Kind::ThinEllipsoid, Kind::Ellipsoid, 200, 58, 1e-12);
 }
 
 // ------------------------------------------------------------------- gradient and symmetry
