@@ -35,6 +35,49 @@ std::vector<V> hull(std::vector<V> p) {
   return h;
 }
 
+/// The Minkowski sum f (+) (-m) of two convex polygons given counter-clockwise without collinear
+/// points (hull() output: 1 or 2 points for a point or a segment), by the O(n + m) merge of their
+/// edges by angle (paper 004: the wrapper has as many edges as both together). Each vertex is
+/// computed as f_i - m_j, and the result is the one hull() would give for every difference: the
+/// same points, collinear ones dropped, starting from the lowest (x, y).
+/// Direction angle of d in [0, 2 pi).
+double edge_angle(const V& d) {
+  const double a = std::atan2(d.y(), d.x());
+  return a < 0 ? a + 2 * kPi : a;
+}
+constexpr double kNever = 10.0;  // beyond every angle: a polygon whose edges are all used
+
+std::vector<V> minkowski_difference(const std::vector<V>& f, const std::vector<V>& m) {
+  const std::size_t nf = f.size(), nm = m.size();
+  // -m is counter-clockwise too (a point reflection is a rotation by 180 degrees).
+  auto lowest = [](const std::vector<V>& p, double sign) {
+    std::size_t k = 0;
+    for (std::size_t i = 1; i < p.size(); ++i) {
+      const V a = sign * p[i], b = sign * p[k];
+      if (a.y() < b.y() || (a.y() == b.y() && a.x() < b.x())) k = i;
+    }
+    return k;
+  };
+  const std::size_t i0 = lowest(f, 1), j0 = lowest(m, -1);
+  std::vector<V> sum;
+  sum.reserve(nf + nm);
+  std::size_t i = 0, j = 0;
+  while (i < nf || j < nm) {
+    const std::size_t a = (i0 + i) % nf, b = (j0 + j) % nm;
+    sum.push_back(f[a] - m[b]);
+    // The edge with the smaller direction angle goes first (angles grow from 0 to 2 pi from the
+    // lowest vertex; a segment's two edges are antiparallel, which a cross product alone would
+    // take for parallel).
+    const double af = i < nf && nf > 1 ? edge_angle(f[(a + 1) % nf] - f[a]) : kNever;
+    const double am = j < nm && nm > 1 ? edge_angle(m[b] - m[(b + 1) % nm]) : kNever;  // an edge of -m
+    const bool step_f = i < nf && (af <= am || nm == 1 || j >= nm);
+    const bool step_m = j < nm && (am <= af || nf == 1 || i >= nf);
+    if (step_f) ++i;
+    if (step_m) ++j;
+  }
+  return hull(std::move(sum));  // drops collinear points, fixes the start: few points, cheap
+}
+
 /// Signed distance from x to the convex hull q (counter-clockwise; 1 or 2 points allowed).
 double signed_distance(const std::vector<V>& q, const V& x) {
   const auto to_segment = [&](const V& a, const V& b) {
@@ -258,16 +301,17 @@ void loci_of(const Body<2>& b, const V& o, const std::vector<RoundedCore<2>>& mo
   const Particle<2>* q = b.shaped;
   const auto fixed = cores_of(q ? q->shape.get() : nullptr, q ? q->pose.rotation : Mat<2>::Identity(), b.center - o, b.radius);
   const double size = std::min(b.radius, mobile_radius);
-  std::vector<V> diff;
-  for (const RoundedCore<2>& F : fixed)
-    for (const RoundedCore<2>& M : mobile) {
-      diff.clear();
-      for (const V& f : F.points)
-        for (const V& m : M.points) diff.push_back(f - m);
+  thread_local std::vector<std::vector<V>> mobile_hulls;
+  mobile_hulls.clear();
+  for (const RoundedCore<2>& M : mobile) mobile_hulls.push_back(hull(M.points));
+  for (const RoundedCore<2>& F : fixed) {
+    const std::vector<V> f = hull(F.points);
+    for (std::size_t k = 0; k < mobile.size(); ++k) {
       Locus L;
-      L.q = hull(diff), L.rho = F.radius + M.radius, L.size = size;
+      L.q = minkowski_difference(f, mobile_hulls[k]), L.rho = F.radius + mobile[k].radius, L.size = size;
       bound(L), out.push_back(L);
     }
+  }
 }
 
 double least_gap(const std::vector<Locus>& loci, const V& x) {
