@@ -5,6 +5,7 @@
 #include <memory>
 #include <limits>
 
+#include "core/geometry/box_container.hpp"
 #include "core/geometry/mesh_container.hpp"
 #include "core/geometry/polygon_container.hpp"
 #include "shapes/facet_shape.hpp"
@@ -15,6 +16,7 @@ namespace fp {
 template <int D>
 ShapeContainment<D>::ShapeContainment(const Container<D>& container, const NarrowPhase<D>& narrow_phase)
     : container_(container), np_(narrow_phase) {
+  planar_convex_ = dynamic_cast<const BoxContainer<D>*>(&container) != nullptr;
   if constexpr (D == 3) {
     if (const auto* mesh = dynamic_cast<const MeshContainer*>(&container))  // any mesh may be non-convex
       for (const auto& t : mesh->triangles()) {
@@ -33,6 +35,7 @@ ShapeContainment<D>::ShapeContainment(const Container<D>& container, const Narro
       const int n = static_cast<int>(v.size());
       bool convex = true;
       for (int i = 0; i < n; ++i) convex &= !poly->is_reflex(i);
+      planar_convex_ = convex;
       if (!convex)
         for (int i = 0; i < n; ++i) {  // an edge is a spherocylinder of radius 0
           const Vec2 a = v[static_cast<std::size_t>(i)], b = v[static_cast<std::size_t>((i + 1) % n)];
@@ -49,6 +52,16 @@ ShapeContainment<D>::ShapeContainment(const Container<D>& container, const Narro
 template <int D>
 double ShapeContainment<D>::protrusion(const Particle<D>& p) const {
   double beyond = -std::numeric_limits<double>::infinity();
+  if (planar_convex_) {
+    // The container is the intersection of its wall half-spaces: the protrusion is the largest
+    // beyond any wall, exact through the support function (a curved shape's hull balls
+    // circumscribe it by up to 0.5 % of a semi-axis, which kept ellipsoids off every wall).
+    near_.clear();
+    container_.walls_near(p.pose.position, std::numeric_limits<double>::infinity(), near_);
+    for (const Wall<D>& w : near_)
+      if (w.kind == WallKind::Plane) beyond = std::max(beyond, -np_.gap(w, p).value);
+    return beyond;
+  }
   for (const Ball<D>& b : p.shape->hull_balls())
     beyond = std::max(beyond, container_.signed_distance(p.pose.to_world(b.center)) + b.radius);
   if (facets_.empty() || beyond > 0) return beyond;

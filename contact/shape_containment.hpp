@@ -17,8 +17,10 @@ class ShapeContainment {
  public:
   ShapeContainment(const Container<D>& container, const NarrowPhase<D>& narrow_phase);
 
-  /// How far the particle reaches beyond the boundary (<= 0: inside; the largest of the hull
-  /// balls' protrusion and, for non-convex containers, the depth of any facet into it).
+  /// How far the particle reaches beyond the boundary (<= 0: inside). A box or a convex polygon:
+  /// the largest protrusion beyond a wall plane, by the support function (exact); otherwise the
+  /// largest of the hull balls' protrusion and, for non-convex containers, the depth of any
+  /// facet into it.
   double protrusion(const Particle<D>& p) const;
   /// protrusion <= tol * circumscribed radius.
   bool inside(const Particle<D>& p, double tol) const { return protrusion(p) <= tol * p.bounding_radius(); }
@@ -27,6 +29,7 @@ class ShapeContainment {
  private:
   const Container<D>& container_;
   const NarrowPhase<D>& np_;
+  bool planar_convex_ = false;  ///< a box or a convex polygon: the intersection of its plane walls
   /// Boundary facets of a non-convex container, by wall id, as particles of zero thickness
   /// (3D: FacetShape; 2D: radius-0 spherocylinders), built once.
   std::vector<Particle<D>> facets_;

@@ -490,9 +490,15 @@ ShapeContainmentReport<D> shape_containment(const fp::ShapePacking<D>& P, const 
     const double R = p.bounding_radius();
     double most = -std::numeric_limits<double>::infinity();
     for (const SurfacePoint<D>& s : surface_samples(p, dirs)) most = std::max(most, sd(s.x, P.origin));
-    // Hull balls of a swept-sphere shape are exact; for the others they are (slightly outside)
-    // points of a circumscribing polytope, which the packer keeps inside too.
-    for (const fp::Ball<D>& b : p.shape->hull_balls()) most = std::max(most, sd(p.pose.to_world(b.center), P.origin) + b.radius);
+    // Hull balls of swept-sphere shapes and polytopes are exact (their members, their vertices);
+    // an ellipsoid's or a cylinder's are points of a circumscribing polytope, up to 0.5 % outside
+    // the shape, and the packer lets the shape itself touch a wall of a box or a convex polygon:
+    // their surface samples above (support points along the walls' normals among them) decide.
+    const bool circumscribing = dynamic_cast<const fp::EllipsoidShape<D>*>(p.shape.get()) != nullptr;
+    bool cylinder = false;
+    if constexpr (D == 3) cylinder = dynamic_cast<const fp::CylinderShape*>(p.shape.get()) != nullptr;
+    if (!circumscribing && !cylinder)
+      for (const fp::Ball<D>& b : p.shape->hull_balls()) most = std::max(most, sd(p.pose.to_world(b.center), P.origin) + b.radius);
     if (most / R > rep.max_outside_rel) {
       rep.max_outside_rel = most / R;
       rep.worst = static_cast<int>(i);
