@@ -218,6 +218,9 @@ int EllipsoidContactSolver<D>::solve(std::span<const Body<D>> fixed, const Mobil
   const SphereContactSolver<D> sphere_solver;
   int found = 0;
   for (const bool circumscribed : {true, false}) {
+    // Two positions from the circumscribed spheres' starts: the volume-equivalent ones find the
+    // same two (they are the second chance for problems the first starts miss).
+    if (!circumscribed && found >= 2) break;
     for (int i = 0; i < D; ++i) {
       const Locus<D>& l = loci[static_cast<std::size_t>(i)];
       const Body<D>& b = fixed[static_cast<std::size_t>(i)];
