@@ -226,11 +226,13 @@ class ShapeModel {
   }
   bool inside(const Draft&, const Vec<D>& x) {
     trial_.pose.position = x;
-    return containment_.inside(trial_, tol_);
+    last_protrusion_ = containment_.protrusion(trial_);
+    return last_protrusion_ <= tol_ * R_;
   }
-  /// Candidates of a wall pair are kept without this check (the containment test above is the
-  /// exact one for shapes; a facet's plane beyond its edges is a follow-up, as for spheres).
-  bool touches_boundary(const Draft&, const Vec<D>&) const { return true; }
+  /// After inside() at the same x: the draft reaches the boundary within the tolerance. A mesh
+  /// facet or polygon edge is offered as its whole plane (line): a position tangent to the plane
+  /// beyond the facet's edges does not touch the container and must not rank as a wall contact.
+  bool touches_boundary(const Draft&, const Vec<D>&) const { return last_protrusion_ >= -tol_ * R_; }
 
  private:
   static constexpr std::size_t kMaxWallBodies = 4;
@@ -313,6 +315,7 @@ class ShapeModel {
   double r0_ = 0, R_ = 0;
   const std::vector<front_parts::Neighbour>* nb_ = nullptr;
   int last_blocker_ = 0;
+  double last_protrusion_ = 0;  ///< of the last candidate tested by inside()
   std::vector<front_parts::Neighbour> wall_order_;
 };
 
