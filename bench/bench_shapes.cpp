@@ -42,8 +42,8 @@ ShapePtr<3> icosahedron() {
   return ShapeFamilies::builtin().prototype<3>(spec).shape;
 }
 
-void BM_GapCapsuleCapsule(benchmark::State& state) {
-  const auto ps = scatter(std::make_shared<SpherocylinderShape<3>>(0.5, 0.5), 1024, 3.0, 1);
+/// The gap of consecutive particles of `ps` (1,024 of them), one per iteration.
+void gap_loop(benchmark::State& state, const std::vector<Particle<3>>& ps) {
   NarrowPhase<3> np;
   std::size_t k = 0;
   for (auto _ : state) {
@@ -52,18 +52,17 @@ void BM_GapCapsuleCapsule(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations());
 }
+
+void BM_GapCapsuleCapsule(benchmark::State& state) {
+  const auto ps = scatter(std::make_shared<SpherocylinderShape<3>>(0.5, 0.5), 1024, 3.0, 1);
+  gap_loop(state, ps);
+}
 BENCHMARK(BM_GapCapsuleCapsule);
 
 /// FCL path: icosahedra (GJK apart, EPA on overlap); the cube side sets the overlapping share.
 void BM_GapPolyhedronFcl(benchmark::State& state) {
   const auto ps = scatter(icosahedron(), 1024, static_cast<double>(state.range(0)) / 10.0, 2);
-  NarrowPhase<3> np;
-  std::size_t k = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(np.gap(ps[k & 1023], ps[(k + 1) & 1023]));
-    ++k;
-  }
-  state.SetItemsProcessed(state.iterations());
+  gap_loop(state, ps);
 }
 BENCHMARK(BM_GapPolyhedronFcl)->Arg(15)->Arg(60);
 
@@ -71,13 +70,7 @@ BENCHMARK(BM_GapPolyhedronFcl)->Arg(15)->Arg(60);
 /// cube side sets the overlapping share (15: most pairs overlap, 60: most are apart).
 void BM_GapEllipsoid(benchmark::State& state) {
   const auto ps = scatter(std::make_shared<EllipsoidShape<3>>(Vec3(1, 0.7, 0.5)), 1024, static_cast<double>(state.range(0)) / 10.0, 3);
-  NarrowPhase<3> np;
-  std::size_t k = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(np.gap(ps[k & 1023], ps[(k + 1) & 1023]));
-    ++k;
-  }
-  state.SetItemsProcessed(state.iterations());
+  gap_loop(state, ps);
 }
 BENCHMARK(BM_GapEllipsoid)->Arg(15)->Arg(60);
 

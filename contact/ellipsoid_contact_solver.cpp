@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "contact/ellipsoid_gap.hpp"
 #include "contact/sphere_contact_solver.hpp"
 #include "shapes/ellipsoid_shape.hpp"
 
@@ -69,19 +70,6 @@ void wrapper_point(const Smooth<D>& F, const Smooth<D>& A, const Vec<D>& n, Vec<
   const double rho = F.rho + A.rho;
   P += rho * n;
   if (H) *H += rho * (Mat<D>::Identity() - n * n.transpose());
-}
-
-template <int D>
-Eigen::Matrix<double, D, D - 1> tangent_basis(const Vec<D>& n) {
-  Eigen::Matrix<double, D, D - 1> T;
-  if constexpr (D == 2) {
-    T.col(0) = Vec2(-n.y(), n.x());
-  } else {
-    const Vec3 e1 = (std::abs(n.x()) < 0.6 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
-    T.col(0) = e1;
-    T.col(1) = n.cross(e1);
-  }
-  return T;
 }
 
 /// One fixed body of the problem: a curved wrapper (x = P(n)) or an offset plane (w.x = b).
@@ -148,7 +136,7 @@ bool newton(const std::array<Locus<D>, D>& loci, const Smooth<D>& A, Vec<D>& x, 
       Vec<D> P;
       Mat<D> H;
       wrapper_point<D>(loci[i].body, A, n[i], P, &H);
-      T[i] = tangent_basis<D>(n[i]);
+      T[i] = ellipsoid_gap_detail::tangent_basis<D>(n[i]);
       J.block(row, 0, D, D) = Mat<D>::Identity();
       J.block(row, col, D, D - 1) = -H * T[i];
       row += D;

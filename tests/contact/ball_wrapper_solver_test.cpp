@@ -222,32 +222,8 @@ TEST(BallWrapperSolver, FindsEveryPositionOfTheMinimisation3D) { minimisation_ro
 
 // ========================================================= 4. spheres, and nothing to find
 
-template <int D>
-void sphere_round(int trials, std::uint64_t seed) {
-  NarrowPhase<D> np;
-  const BallWrapperSolver<D> wrapper;
-  const SphereContactSolver<D> analytic;
-  Rng rng(seed);
-  int compared = 0;
-  for (int trial = 0; trial < trials; ++trial) {
-    Problem<D> pb;
-    std::array<Kind, D> kinds;
-    kinds.fill(Kind::Sphere);
-    if (trial % 3 == 0) kinds[0] = Kind::Plane;
-    if (!construct_problem<D>(pb, np, Kind::Sphere, kinds, Sizes{}, rng)) continue;
-    Out<D> w, a;
-    const int nw = wrapper.solve(pb.span(), pb.mobile(), w);
-    const int na = analytic.solve(pb.span(), pb.mobile(), std::span<Placement<D>>(a.data(), ContactSolver<D>::kMaxSolutions));
-    ASSERT_EQ(nw, na) << "trial " << trial << pb.literal();
-    for (int k = 0; k < na; ++k)
-      EXPECT_LE(closest<D>(first<D>(w, nw), a[k].position).second, 1e-9 * pb.mobile_shape->bounding_radius());
-    ++compared;
-  }
-  EXPECT_GE(compared, trials * 9 / 10);
-}
-
-TEST(BallWrapperSolver, SpheresGiveTheAnalyticPositions2D) { sphere_round<2>(100, 7300); }
-TEST(BallWrapperSolver, SpheresGiveTheAnalyticPositions3D) { sphere_round<3>(100, 8300); }
+TEST(BallWrapperSolver, SpheresGiveTheAnalyticPositions2D) { expect_analytic_positions_for_spheres<2>(BallWrapperSolver<2>{}, 100, 7300); }
+TEST(BallWrapperSolver, SpheresGiveTheAnalyticPositions3D) { expect_analytic_positions_for_spheres<3>(BallWrapperSolver<3>{}, 100, 8300); }
 
 TEST(BallWrapperSolver, FarApartGivesNothing2D) {
   expect_nothing_when_one_is_far<2>(BallWrapperSolver<2>{}, Kind::Cluster, {Kind::Cluster, Kind::Cluster}, 100, 1, 1, 2);

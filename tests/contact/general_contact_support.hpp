@@ -49,6 +49,7 @@
 #include "contact/contact_solver.hpp"
 #include "contact/minimisation_solver.hpp"
 #include "contact/narrow_phase.hpp"
+#include "contact/sphere_contact_solver.hpp"
 #include "core/sampling/rng.hpp"
 #include "shapes/cluster_shape.hpp"
 #include "shapes/convex_polytope_shape.hpp"
@@ -1336,6 +1337,32 @@ void expect_same_when_shifted(const ContactSolver<D>& solver, Kind mobile, const
     ++compared;
   }
   EXPECT_GE(compared, 27);
+}
+
+/// Sphere problems (spheres, every third with a plane wall): `solver` returns the positions of
+/// the analytic sphere solver, as many and each within 1e-9 of the mobile's size.
+template <int D>
+void expect_analytic_positions_for_spheres(const ContactSolver<D>& solver, int trials, std::uint64_t seed) {
+  NarrowPhase<D> np;
+  const SphereContactSolver<D> analytic;
+  Rng rng(seed);
+  int compared = 0;
+  for (int trial = 0; trial < trials; ++trial) {
+    Problem<D> pb;
+    std::array<Kind, D> kinds;
+    kinds.fill(Kind::Sphere);
+    if (trial % 3 == 0) kinds[0] = Kind::Plane;
+    if (!construct_problem<D>(pb, np, Kind::Sphere, kinds, Sizes{}, rng)) continue;
+    std::array<Placement<D>, ContactSolver<D>::kMaxCandidates> w, a;
+    const int nw = solver.solve(pb.span(), pb.mobile(), w);
+    const int na = analytic.solve(pb.span(), pb.mobile(), std::span<Placement<D>>(a.data(), ContactSolver<D>::kMaxSolutions));
+    ASSERT_EQ(nw, na) << "trial " << trial << pb.literal();
+    for (int k = 0; k < na; ++k)
+      EXPECT_LE(closest<D>(std::span<const Placement<D>>(w.data(), static_cast<std::size_t>(nw)), a[k].position).second,
+                1e-9 * pb.mobile_shape->bounding_radius());
+    ++compared;
+  }
+  EXPECT_GE(compared, trials * 9 / 10);
 }
 
 /// Problems built as usual, then the last fixed body moved `away` on every axis: no position can
