@@ -10,7 +10,8 @@
 //  * SphereModel (front/sphere_model.hpp): centres and radii, the analytic solver inlined;
 //  * ShapeModel (front/shape_model.hpp): shapes and poses, each pair sent to the contact solver
 //    the registry picks for the kinds involved (paper 004: wrappers, minimisation).
-// What a model provides is listed in front/sphere_model.hpp, the smallest one.
+// What a model provides: the public members of front/sphere_model.hpp, the smallest model (the
+// manager uses every one of them).
 // Differences from the paper, each an option measured in experiments/front-levers/RESULTS.md,
 // the same for every shape:
 //  * walls are bodies (PackerOptions::walls_as_bodies): near the boundary the walls within
