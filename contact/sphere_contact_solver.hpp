@@ -469,7 +469,7 @@ class SphereContactSolver final : public ContactSolver<D> {
       Vec<D> F;
       bool ok = true;
       for (int i = 0; i < D; ++i) {
-        Vec<D> g;
+        Vec<D> g = Vec<D>::Zero();  // residual() sets it for every locus kind; GCC cannot see that
         F[i] = residual(L[i], y, g);
         J.row(i) = g.transpose();
         const double size = fixed[i].is_wall() ? r : std::min(r, fixed[i].radius);
