@@ -1,7 +1,7 @@
 #pragma once
-// Pieces both advancing fronts (spheres: advancing_front.hpp; any shape: shape_front.cpp) use:
-// the front's heap entry, the neighbourhood V and its order, random directions and the lattice of
-// void probes.
+// Pieces of the advancing front (advancing_front.hpp) that need no particle model: the front's
+// heap entry, the neighbourhood V and its order, random directions, the search for the direction
+// with the most room and the lattice of void probes.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
