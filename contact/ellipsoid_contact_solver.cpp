@@ -13,60 +13,37 @@
 namespace fp {
 namespace {
 
-/// A smooth convex body {c + M u + rho w}: Q = M M^T (0 for a ball), rho (0 for an ellipsoid).
+/// A body of the problem (SmoothConvexBody, ellipsoid_gap.hpp) with the radii of the
+/// equivalent spheres that start Newton.
 template <int D>
 struct Smooth {
-  Vec<D> c = Vec<D>::Zero();
-  Mat<D> Q = Mat<D>::Zero();
-  double rho = 0;
-  double circumscribed = 0;  ///< radius of its circumscribed sphere about c
+  SmoothConvexBody<D> body;
+  double circumscribed = 0;  ///< radius of its circumscribed sphere about the centre
   double equivalent = 0;     ///< radius of the ball of the same measure
 };
 
+/// An ellipsoid or a sphere (by the shape's kind) at rotation R about c.
 template <int D>
 Smooth<D> smooth_of(const Shape<D>& s, const Mat<D>& R, const Vec<D>& c) {
-  Smooth<D> b;
-  b.c = c;
-  if (std::strcmp(s.kind(), EllipsoidShape<D>::kKind) == 0) {
-    const Vec<D>& axes = static_cast<const EllipsoidShape<D>&>(s).semi_axes();
-    const Mat<D> M = R * axes.asDiagonal();
-    b.Q = M * M.transpose();
-    b.circumscribed = axes.maxCoeff();
-    b.equivalent = std::pow(axes.prod(), 1.0 / D);
-  } else {  // a sphere (disk)
-    b.rho = s.bounding_radius();
-    b.circumscribed = b.equivalent = b.rho;
-  }
+  Smooth<D> b{smooth_convex_body<D>(s, R, c), s.bounding_radius(), s.bounding_radius()};
+  if (std::strcmp(s.kind(), EllipsoidShape<D>::kKind) == 0)
+    b.equivalent = std::pow(static_cast<const EllipsoidShape<D>&>(s).semi_axes().prod(), 1.0 / D);
   return b;
 }
 
 template <int D>
 Smooth<D> ball(const Vec<D>& c, double r) {
-  Smooth<D> b;
-  b.c = c;
-  b.rho = b.circumscribed = b.equivalent = r;
-  return b;
-}
-
-/// Adds the gradient of sqrt(n^T Q n) at the unit n, and its Hessian if H is given.
-template <int D>
-void add_norm(const Mat<D>& Q, const Vec<D>& n, Vec<D>& P, Mat<D>* H) {
-  const Vec<D> q = Q * n;
-  const double N2 = n.dot(q);
-  if (!(N2 > 0)) return;
-  const double N = std::sqrt(N2);
-  P += q / N;
-  if (H) *H += (Q - q * q.transpose() / N2) / N;
+  return {smooth_ball<D>(c, r), r, r};
 }
 
 /// The wrapper of fixed body F for the mobile A: its boundary point of outward normal n (unit)
 /// and, if H is given, the Hessian of its support function there (d P / d n on the tangent plane).
 template <int D>
-void wrapper_point(const Smooth<D>& F, const Smooth<D>& A, const Vec<D>& n, Vec<D>& P, Mat<D>* H) {
-  P = F.c;
+void wrapper_point(const SmoothConvexBody<D>& F, const SmoothConvexBody<D>& A, const Vec<D>& n, Vec<D>& P, Mat<D>* H) {
+  P = F.center;
   if (H) H->setZero();
-  add_norm<D>(F.Q, n, P, H);
-  add_norm<D>(A.Q, n, P, H);
+  add_support_norm<D>(F.Q, n, 1.0, nullptr, P, H);
+  add_support_norm<D>(A.Q, n, 1.0, nullptr, P, H);
   const double rho = F.rho + A.rho;
   P += rho * n;
   if (H) *H += rho * (Mat<D>::Identity() - n * n.transpose());
@@ -76,7 +53,7 @@ void wrapper_point(const Smooth<D>& F, const Smooth<D>& A, const Vec<D>& n, Vec<
 template <int D>
 struct Locus {
   bool plane = false;
-  Smooth<D> body;            ///< curved
+  Smooth<D> curved;          ///< curved
   Vec<D> w = Vec<D>::Zero();  ///< plane: inward unit normal
   double b = 0;              ///< plane: offset of the mobile's centre
 };
@@ -93,7 +70,7 @@ using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxUnkn
 
 /// Residual of the system at (x, normals): x - P_i(n_i) for curved loci, w.x - b for planes.
 template <int D>
-Vector residual(const std::array<Locus<D>, D>& loci, const Smooth<D>& A, const Vec<D>& x, const std::array<Vec<D>, D>& n, int rows) {
+Vector residual(const std::array<Locus<D>, D>& loci, const SmoothConvexBody<D>& A, const Vec<D>& x, const std::array<Vec<D>, D>& n, int rows) {
   Vector r(rows);
   int row = 0;
   for (int i = 0; i < D; ++i) {
@@ -101,7 +78,7 @@ Vector residual(const std::array<Locus<D>, D>& loci, const Smooth<D>& A, const V
       r(row++) = loci[i].w.dot(x) - loci[i].b;
     } else {
       Vec<D> P;
-      wrapper_point<D>(loci[i].body, A, n[i], P, nullptr);
+      wrapper_point<D>(loci[i].curved.body, A, n[i], P, nullptr);
       r.template segment<D>(row) = x - P;
       row += D;
     }
@@ -111,7 +88,7 @@ Vector residual(const std::array<Locus<D>, D>& loci, const Smooth<D>& A, const V
 
 /// Newton's method on the system from (x, n); true when it converged (|residual| <= tol).
 template <int D>
-bool newton(const std::array<Locus<D>, D>& loci, const Smooth<D>& A, Vec<D>& x, std::array<Vec<D>, D>& n, double tol) {
+bool newton(const std::array<Locus<D>, D>& loci, const SmoothConvexBody<D>& A, Vec<D>& x, std::array<Vec<D>, D>& n, double tol) {
   int curved = 0;
   for (const Locus<D>& l : loci) curved += !l.plane;
   const int unknowns = D + (D - 1) * curved;
@@ -135,7 +112,7 @@ bool newton(const std::array<Locus<D>, D>& loci, const Smooth<D>& A, Vec<D>& x, 
       }
       Vec<D> P;
       Mat<D> H;
-      wrapper_point<D>(loci[i].body, A, n[i], P, &H);
+      wrapper_point<D>(loci[i].curved.body, A, n[i], P, &H);
       T[i] = ellipsoid_gap_detail::tangent_basis<D>(n[i]);
       J.block(row, 0, D, D) = Mat<D>::Identity();
       J.block(row, col, D, D - 1) = -H * T[i];
@@ -191,11 +168,11 @@ int EllipsoidContactSolver<D>::solve(std::span<const Body<D>> fixed, const Mobil
       l.plane = true;
       l.w = b.wall->normal;
       // The mobile touches the plane from the container side: w.(x - p) = its extent along -w.
-      l.b = l.w.dot(b.wall->point - origin) + std::sqrt(std::max(0.0, l.w.dot(A.Q * l.w))) + A.rho;
+      l.b = l.w.dot(b.wall->point - origin) + std::sqrt(std::max(0.0, l.w.dot(A.body.Q * l.w))) + A.body.rho;
     } else {
-      l.body = b.shaped ? smooth_of<D>(*b.shaped->shape, b.shaped->pose.rotation, Vec<D>(b.center - origin))
+      l.curved = b.shaped ? smooth_of<D>(*b.shaped->shape, b.shaped->pose.rotation, Vec<D>(b.center - origin))
                         : ball<D>(Vec<D>(b.center - origin), b.radius);
-      size = std::min(size, l.body.circumscribed);
+      size = std::min(size, l.curved.circumscribed);
     }
   }
   const double tol = 1e-12 * size;
@@ -213,7 +190,7 @@ int EllipsoidContactSolver<D>::solve(std::span<const Body<D>> fixed, const Mobil
       const Locus<D>& l = loci[static_cast<std::size_t>(i)];
       const Body<D>& b = fixed[static_cast<std::size_t>(i)];
       spheres[static_cast<std::size_t>(i)] =
-          l.plane ? b : Body<D>::sphere(l.body.c, circumscribed ? l.body.circumscribed : l.body.equivalent);
+          l.plane ? b : Body<D>::sphere(l.curved.body.center, circumscribed ? l.curved.circumscribed : l.curved.equivalent);
     }
     // The sphere solver sees the walls in world coordinates: shift them into the working frame.
     std::array<Wall<D>, D> walls;
@@ -231,10 +208,10 @@ int EllipsoidContactSolver<D>::solve(std::span<const Body<D>> fixed, const Mobil
       std::array<Vec<D>, D> n;
       for (int i = 0; i < D; ++i) {
         const Locus<D>& l = loci[static_cast<std::size_t>(i)];
-        const Vec<D> d = l.plane ? Vec<D>(l.w) : Vec<D>(x - l.body.c);
+        const Vec<D> d = l.plane ? Vec<D>(l.w) : Vec<D>(x - l.curved.body.center);
         n[static_cast<std::size_t>(i)] = d.norm() > 0 ? Vec<D>(d.normalized()) : Vec<D>(Vec<D>::UnitX());
       }
-      if (!newton<D>(loci, A, x, n, tol)) continue;
+      if (!newton<D>(loci, A.body, x, n, tol)) continue;
       const Vec<D> world = x + origin;
       bool seen = false;
       for (int k = 0; k < found && !seen; ++k) seen = (out[static_cast<std::size_t>(k)].position - world).norm() <= 1e-8 * size;

@@ -10,10 +10,12 @@
 // an ascent of ~100 support evaluations on overlap). The maximiser n is d(gap)/d(c_b).
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "contact/narrow_phase.hpp"
 #include "core/geometry/vec.hpp"
+#include "shapes/ellipsoid_shape.hpp"
 
 namespace fp {
 
@@ -21,6 +23,7 @@ template <int D>
 struct SmoothConvexBody {
   Vec<D> center;
   Mat<D> M = Mat<D>::Zero();  ///< the linear part: R diag(semi-axes) for an ellipsoid, 0 for a ball
+  Mat<D> Q = Mat<D>::Zero();  ///< M M^T: |M^T n| = sqrt(n^T Q n)
   double rho = 0.0;           ///< rounding radius: a ball's radius
   /// An ellipsoid's M^-1 = diag(1 / semi-axes) R^T and least semi-axis (depth_inside uses them).
   Mat<D> M_inverse = Mat<D>::Zero();
@@ -34,6 +37,44 @@ struct SmoothConvexBody {
   }
 };
 
+/// A ball of radius r about c.
+template <int D>
+SmoothConvexBody<D> smooth_ball(const Vec<D>& c, double r) {
+  SmoothConvexBody<D> s;
+  s.center = c;
+  s.rho = r;
+  return s;
+}
+
+/// The body of an ellipsoid (ellipse) at rotation R about c; any other shape is taken for the
+/// sphere (disk) of its circumscribed radius (callers pass ellipsoids and spheres only).
+template <int D>
+SmoothConvexBody<D> smooth_convex_body(const Shape<D>& shape, const Mat<D>& R, const Vec<D>& c) {
+  if (std::strcmp(shape.kind(), EllipsoidShape<D>::kKind) != 0) return smooth_ball<D>(c, shape.bounding_radius());
+  SmoothConvexBody<D> s;
+  s.center = c;
+  const Vec<D>& axes = static_cast<const EllipsoidShape<D>&>(shape).semi_axes();
+  s.M = R * axes.asDiagonal();
+  s.Q = s.M * s.M.transpose();
+  s.M_inverse = axes.cwiseInverse().asDiagonal() * R.transpose();
+  s.least_axis = axes.minCoeff();
+  return s;
+}
+
+/// sign x |M^T n| = sign x sqrt(n^T Q n) at n, added to f (if given), its gradient to g and its
+/// Hessian to H (if given): the support-function terms of the gap and of the wrappers. A ball's
+/// Q = 0 adds nothing.
+template <int D>
+void add_support_norm(const Mat<D>& Q, const Vec<D>& n, double sign, double* f, Vec<D>& g, Mat<D>* H) {
+  const Vec<D> q = Q * n;
+  const double N2 = n.dot(q);
+  if (!(N2 > 0)) return;
+  const double N = std::sqrt(N2);
+  if (f) *f += sign * N;
+  g += sign * (q / N);
+  if (H) *H += sign * ((Q - q * q.transpose() / N2) / N);
+}
+
 namespace ellipsoid_gap_detail {
 
 /// f(n), its gradient and Hessian in R^D (f is 1-homogeneous: the norms |M^T n| are convex).
@@ -45,21 +86,10 @@ struct Local {
 };
 
 template <int D>
-void add_norm_term(const Mat<D>& Q, const Vec<D>& n, Local<D>& L) {
-  const Vec<D> q = Q * n;
-  const double N2 = n.dot(q);
-  if (!(N2 > 0)) return;  // a ball (Q = 0): no term
-  const double N = std::sqrt(N2);
-  L.f -= N;
-  L.g -= q / N;
-  L.H -= (Q - q * q.transpose() / N2) / N;
-}
-
-template <int D>
 Local<D> evaluate(const Vec<D>& d, const Mat<D>& Qa, const Mat<D>& Qb, double rho, const Vec<D>& n) {
   Local<D> L{d.dot(n) - rho, d, Mat<D>::Zero()};
-  add_norm_term<D>(Qa, n, L);
-  add_norm_term<D>(Qb, n, L);
+  add_support_norm<D>(Qa, n, -1.0, &L.f, L.g, &L.H);
+  add_support_norm<D>(Qb, n, -1.0, &L.f, L.g, &L.H);
   return L;
 }
 
@@ -134,7 +164,8 @@ template <int D>
 Gap<D> smooth_convex_gap(const SmoothConvexBody<D>& a, const SmoothConvexBody<D>& b) {
   using namespace ellipsoid_gap_detail;
   const Vec<D> d = b.center - a.center;
-  const Mat<D> Qa = a.M * a.M.transpose(), Qb = b.M * b.M.transpose();
+  const Mat<D>& Qa = a.Q;
+  const Mat<D>& Qb = b.Q;
   const double rho = a.rho + b.rho;
   const double dn = d.norm();
   Vec<D> best_n = dn > 0 ? Vec<D>(d / dn) : Vec<D>(Vec<D>::UnitX());
@@ -165,7 +196,8 @@ template <int D>
 bool smooth_convex_overlap_beyond(const SmoothConvexBody<D>& a, const SmoothConvexBody<D>& b, double allowed) {
   using namespace ellipsoid_gap_detail;
   const Vec<D> d = b.center - a.center;
-  const Mat<D> Qa = a.M * a.M.transpose(), Qb = b.M * b.M.transpose();
+  const Mat<D>& Qa = a.Q;
+  const Mat<D>& Qb = b.Q;
   const double dn = d.norm();
   Vec<D> n = dn > 0 ? Vec<D>(d / dn) : Vec<D>(Vec<D>::UnitX());
   if (maximise_from<D>(d, Qa, Qb, a.rho + b.rho, n) >= -allowed) return false;

@@ -308,46 +308,22 @@ void tighten_by_pulls(const fcl::CollisionGeometryd* ga, const fcl::Transform3d&
 /// Ellipsoids (ellipses) against ellipsoids and balls: Newton on the support functions
 /// (contact/ellipsoid_gap.hpp) instead of FCL's GJK.
 template <int D>
-SmoothConvexBody<D> ellipsoid_body(const Particle<D>& p) {
-  SmoothConvexBody<D> s;
-  s.center = p.pose.position;
-  const Vec<D>& axes = static_cast<const EllipsoidShape<D>&>(*p.shape).semi_axes();
-  s.M = p.pose.rotation * axes.asDiagonal();
-  s.M_inverse = axes.cwiseInverse().asDiagonal() * p.pose.rotation.transpose();
-  s.least_axis = axes.minCoeff();
-  return s;
+SmoothConvexBody<D> smooth_body(const Particle<D>& p) {
+  return smooth_convex_body<D>(*p.shape, p.pose.rotation, p.pose.position);
 }
 
 template <int D>
-SmoothConvexBody<D> ball_body(const Particle<D>& p) {
-  SmoothConvexBody<D> s;
-  s.center = p.pose.position;
-  s.rho = p.bounding_radius();
-  return s;
+Gap<D> smooth_gap(const Particle<D>& a, const Particle<D>& b) {
+  return smooth_convex_gap<D>(smooth_body(a), smooth_body(b));
 }
 
-template <int D>
-Gap<D> ellipsoid_ellipsoid(const Particle<D>& a, const Particle<D>& b) {
-  return smooth_convex_gap<D>(ellipsoid_body(a), ellipsoid_body(b));
-}
-
-template <int D>
-Gap<D> sphere_ellipsoid(const Particle<D>& a, const Particle<D>& b) {
-  return smooth_convex_gap<D>(ball_body(a), ellipsoid_body(b));
-}
-
-/// An ellipsoid with an ellipsoid or a sphere: the pairs of smooth_convex_gap; the body of each.
+/// An ellipsoid with an ellipsoid or a sphere: the pairs registered for smooth_gap.
 template <int D>
 bool smooth_pair(const Particle<D>& a, const Particle<D>& b) {
   const bool ea = std::strcmp(a.shape->kind(), EllipsoidShape<D>::kKind) == 0;
   const bool eb = std::strcmp(b.shape->kind(), EllipsoidShape<D>::kKind) == 0;
   return (ea && (eb || std::strcmp(b.shape->kind(), SphereShape<D>::kKind) == 0)) ||
          (eb && std::strcmp(a.shape->kind(), SphereShape<D>::kKind) == 0);
-}
-
-template <int D>
-SmoothConvexBody<D> smooth_body(const Particle<D>& p) {
-  return std::strcmp(p.shape->kind(), EllipsoidShape<D>::kKind) == 0 ? ellipsoid_body(p) : ball_body(p);
 }
 
 bool is_ball_made(const char* kind) {
@@ -365,8 +341,8 @@ NarrowPhase<D>::NarrowPhase() {
   add_pair("cluster", "cluster", ball_union_gap<D>);
   add_pair("cluster", "sphere", ball_union_gap<D>);
   add_pair("cluster", "spherocylinder", ball_union_gap<D>);
-  add_pair(EllipsoidShape<D>::kKind, EllipsoidShape<D>::kKind, ellipsoid_ellipsoid<D>);
-  add_pair("sphere", EllipsoidShape<D>::kKind, sphere_ellipsoid<D>);
+  add_pair(EllipsoidShape<D>::kKind, EllipsoidShape<D>::kKind, smooth_gap<D>);
+  add_pair("sphere", EllipsoidShape<D>::kKind, smooth_gap<D>);
 }
 
 template <int D>

@@ -50,7 +50,8 @@ class NarrowPhase {
   Gap<D> gap(const Particle<D>& a, const Particle<D>& b) const;
   /// gap(a, b).value < -allowed, decided without a distance query for two convex polytopes (by
   /// the separating-axis theorem, which is exact for them: the first axis that separates them
-  /// by more than -allowed ends it).
+  /// by more than -allowed ends it), and mostly without the full search for an ellipsoid with an
+  /// ellipsoid or a sphere (smooth_convex_overlap_beyond).
   bool overlap_beyond(const Particle<D>& a, const Particle<D>& b, double allowed) const;
   /// gap(a, b).value > d; for two convex polytopes a separating axis that shows more than d (a
   /// lower bound of the gap) answers without a distance query.
