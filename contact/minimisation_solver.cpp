@@ -2,7 +2,6 @@
 
 #include <nlopt.hpp>
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -10,7 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "contact/sphere_contact_solver.hpp"
+#include "contact/gap_newton.hpp"
 #include "shapes/sphere_shape.hpp"
 
 namespace fp {
@@ -39,7 +38,6 @@ template <int D>
 struct MinimisationSolver<D>::Impl {
   Algorithm algorithm;
   nlopt::opt opt;  // reused: building an nlopt::opt per solve costs more than a capsule solve
-  SphereContactSolver<D> spheres;
 
   // The problem being solved, read by the objective.
   const NarrowPhase<D>* np = nullptr;
@@ -179,25 +177,9 @@ int MinimisationSolver<D>::solve(std::span<const Body<D>> fixed, const Mobile<D>
     }
   }
 
-  // Starting points: the analytic positions of equivalent spheres (radius halfway between
-  // inscribed and circumscribed), then circumscribed, then inscribed radii, until some exist.
+  // Starting points: the analytic positions of equivalent spheres.
   std::array<Placement<D>, ContactSolver<D>::kMaxSolutions> starts;
-  int n_starts = 0;
-  for (int attempt = 0; attempt < 3 && n_starts == 0; ++attempt) {
-    auto equivalent = [&](const Shape<D>& sh) {
-      const double ri = sh.inscribed_radius(), rb = sh.bounding_radius();
-      return attempt == 0 ? 0.5 * (ri + rb) : attempt == 1 ? rb : ri;
-    };
-    std::array<Body<D>, D> eq;
-    for (int i = 0; i < D; ++i) {
-      eq[static_cast<std::size_t>(i)] = fixed[i];
-      if (fixed[i].shaped) eq[static_cast<std::size_t>(i)].radius = equivalent(*fixed[i].shaped->shape);
-    }
-    Mobile<D> eq_mobile;
-    eq_mobile.radius = equivalent(*mobile.shape);
-    n_starts = s.spheres.solve(std::span<const Body<D>>(eq.data(), D), eq_mobile,
-                               std::span<Placement<D>>(starts.data(), starts.size()));
-  }
+  int n_starts = gap_newton::equivalent_sphere_starts<D>(fixed, *mobile.shape, starts);
   if (n_starts == 0 && has_plane) {  // far apart for equivalent spheres: both sides of the plane
     Vec<D> c = Vec<D>::Zero();
     for (const Body<D>& b : fixed) c += b.center / D;
@@ -222,33 +204,10 @@ int MinimisationSolver<D>::solve(std::span<const Body<D>> fixed, const Mobile<D>
       if ((out[static_cast<std::size_t>(q)].position - x).norm() <= 1e-6 * r_mob) return false;
     return true;
   };
-  // Newton on the D x D system ω_i(x) = 0 (rows = gradients), from x with gaps g: quadratic
-  // convergence once close; stops when a step does not reduce the largest gap.
+  // Newton on the D x D system ω_i(x) = 0 from x with gaps g, polishing to 1e-3 of the tolerance.
   auto newton = [&](Vec<D>& x, int iterations) {
-    for (int it = 0; it < iterations && !converged(1e-3); ++it) {
-      Eigen::Matrix<double, D, D> J;
-      Vec<D> rhs;
-      for (int i = 0; i < D; ++i) {
-        J.row(i) = g[static_cast<std::size_t>(i)].normal.transpose();
-        rhs[i] = -g[static_cast<std::size_t>(i)].value;
-      }
-      const Eigen::FullPivLU<Eigen::Matrix<double, D, D>> lu(J);
-      if (lu.rank() < D) return;
-      Vec<D> dx = lu.solve(rhs);
-      const double len = dx.norm();
-      if (!std::isfinite(len)) return;
-      if (len > 0.5 * r_mob) dx *= 0.5 * r_mob / len;
-      std::array<Gap<D>, D> g_new;
-      s.gaps(x + dx, g_new);
-      double before = 0, after = 0;
-      for (int i = 0; i < D; ++i) {
-        before = std::max(before, std::abs(g[static_cast<std::size_t>(i)].value));
-        after = std::max(after, std::abs(g_new[static_cast<std::size_t>(i)].value));
-      }
-      if (!(after < before)) return;
-      x += dx;
-      g = g_new;
-    }
+    gap_newton::newton<D>([&](const Vec<D>& y, std::array<Gap<D>, D>& gy) { s.gaps(y, gy); },
+                          [&](const std::array<Gap<D>, D>&) { return converged(1e-3); }, x, g, 0.5 * r_mob, iterations);
   };
   for (int k = 0; k < n_starts && found < static_cast<int>(out.size()); ++k) {
     const Vec<D> x0 = starts[static_cast<std::size_t>(k)].position;

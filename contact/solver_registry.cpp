@@ -4,6 +4,7 @@
 
 #include "contact/ball_wrapper_solver.hpp"
 #include "contact/ellipsoid_contact_solver.hpp"
+#include "contact/gap_newton_solver.hpp"
 #include "contact/minimisation_solver.hpp"
 #include "contact/polygon_wrapper_solver.hpp"
 #include "contact/polytope_wrapper_solver.hpp"
@@ -26,6 +27,14 @@ SolverRegistry<D>::SolverRegistry(const NarrowPhase<D>& narrow_phase, const Mini
     for (const char* mobile : cores) {
       add_walls(mobile, wrapper);
       for (const char* fixed : cores) add_pair(fixed, mobile, wrapper);
+    }
+  }
+  if constexpr (D == 3) {  // capsules with capsules, spheres and smooth walls: Newton on exact gaps
+    auto solver = std::make_shared<GapNewtonSolver<D>>(narrow_phase, options.gap_tolerance);
+    const char* smooth[] = {SpherocylinderShape<D>::kKind, SphereShape<D>::kKind};
+    for (const char* mobile : smooth) {
+      for (const char* wall : {kPlaneWall, kSphereWall, kCylinderWall}) add_pair(wall, mobile, solver);
+      for (const char* fixed : smooth) add_pair(fixed, mobile, solver);
     }
   }
   if constexpr (D == 3) {  // polyhedra against polyhedra and plane walls (other walls: not taken)

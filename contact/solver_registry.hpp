@@ -4,11 +4,12 @@
 // surface (kPlaneWall, ...), so a solver can take plane walls and leave curved ones.
 // Minimisation is the default for every pair. A problem goes to the most recently registered
 // solver that is registered for EVERY (fixed, mobile) pair of the problem, else to the default.
-// In 2D the polygon wrapper covers disks, stadiums, polygons, clusters and walls; in 3D the
-// polytope wrapper polyhedra and plane walls; the ellipsoid solver, registered after them, takes
-// ellipsoids (ellipses), spheres and plane walls; the ball wrapper spheres (disks) and clusters
-// with walls; the analytic sphere solver, registered last, spheres and walls alone. A 3D sphere
-// placed against two spheres and a capsule still goes to minimisation.
+// In 2D the polygon wrapper covers disks, stadiums, polygons, clusters and walls; in 3D the gap
+// Newton solver capsules, spheres and smooth walls, the polytope wrapper polyhedra and plane
+// walls; the ellipsoid solver, registered after them, takes ellipsoids (ellipses), spheres and
+// plane walls; the ball wrapper spheres (disks) and clusters
+// with walls; the analytic sphere solver, registered last, spheres and walls alone. A 3D capsule
+// placed against a cluster or a cylinder still goes to minimisation.
 #include <map>
 #include <memory>
 #include <span>
@@ -33,8 +34,8 @@ template <int D>
 class SolverRegistry {
  public:
   /// The default registry: minimisation everywhere; in 2D the polygon wrapper for rounded convex
-  /// cores, in 3D the polytope wrapper for polyhedra; the ellipsoid solver for ellipsoids, spheres
-  /// and plane walls; the ball wrapper for spheres, clusters and walls; the analytic sphere
+  /// cores, in 3D the gap Newton solver for capsules and the polytope wrapper for polyhedra; the
+  /// ellipsoid solver for ellipsoids, spheres and plane walls; the ball wrapper for spheres, clusters and walls; the analytic sphere
   /// solver for spheres and walls.
   /// With `closed_form` false, minimisation for every problem (no solver registered).
   SolverRegistry(const NarrowPhase<D>& narrow_phase, const MinimisationOptions& options, bool closed_form = true);
