@@ -1,11 +1,13 @@
 // The general-shape machinery: narrow-phase gaps (analytic capsule and ellipsoid paths, FCL
-// polytope path) and one minimisation solve (a capsule touching three capsules), per algorithm.
+// polytope path) and one capsule contact problem, by minimisation (per algorithm) and by the gap
+// Newton solver.
 // A separate executable: frontpack_bench (spheres) must link no FCL and no NLopt.
 #include <benchmark/benchmark.h>
 
 #include <array>
 #include <vector>
 
+#include "contact/gap_newton_solver.hpp"
 #include "contact/minimisation_solver.hpp"
 #include "core/sampling/rng.hpp"
 #include "shapes/shape_registry.hpp"
@@ -74,15 +76,10 @@ void BM_GapEllipsoid(benchmark::State& state) {
 }
 BENCHMARK(BM_GapEllipsoid)->Arg(15)->Arg(60);
 
-/// One contact problem: a capsule (aspect ratio 0.5) touching three capsules that touch a known
-/// position; args: algorithm index (slsqp, lbfgs, nelder-mead).
-void BM_MinimisationCapsules(benchmark::State& state) {
-  const char* names[] = {"slsqp", "lbfgs", "nelder-mead"};
-  MinimisationOptions o;
-  o.algorithm = names[state.range(0)];
-  if (o.algorithm == "nelder-mead") o.max_evaluations = 600;
-  NarrowPhase<3> np;
-  MinimisationSolver<3> solver(np, o);
+/// Contact problems: a capsule (aspect ratio 0.5, identity orientation) against three capsules
+/// at random poses in a cube of side 2.5 (most have no solution, as in the front's pair scan);
+/// one solve per iteration, cycling through 256 problems.
+void capsule_solves(benchmark::State& state, const ContactSolver<3>& solver, const char* label) {
   const auto shape = std::make_shared<SpherocylinderShape<3>>(0.5, 0.5);
   auto fixed = scatter(shape, 3 * 256, 2.5, 3);
   std::vector<std::array<Body<3>, 3>> problems;
@@ -95,9 +92,26 @@ void BM_MinimisationCapsules(benchmark::State& state) {
   int found = 0;
   for (auto _ : state) found += solver.solve(problems[k++ & 255], mobile, out);
   state.SetItemsProcessed(state.iterations());
-  state.SetLabel(o.algorithm);
+  state.SetLabel(label);
   state.counters["solutions_per_solve"] = static_cast<double>(found) / static_cast<double>(state.iterations());
 }
+
+/// By minimisation; args: algorithm index (slsqp, lbfgs, nelder-mead).
+void BM_MinimisationCapsules(benchmark::State& state) {
+  const char* names[] = {"slsqp", "lbfgs", "nelder-mead"};
+  MinimisationOptions o;
+  o.algorithm = names[state.range(0)];
+  if (o.algorithm == "nelder-mead") o.max_evaluations = 600;
+  NarrowPhase<3> np;
+  capsule_solves(state, MinimisationSolver<3>(np, o), names[state.range(0)]);
+}
 BENCHMARK(BM_MinimisationCapsules)->Arg(0)->Arg(1)->Arg(2);
+
+/// The same problems by the gap Newton solver (the registry's choice for capsules).
+void BM_GapNewtonCapsules(benchmark::State& state) {
+  NarrowPhase<3> np;
+  capsule_solves(state, GapNewtonSolver<3>(np, MinimisationOptions{}.gap_tolerance), "gap newton");
+}
+BENCHMARK(BM_GapNewtonCapsules);
 
 }  // namespace
