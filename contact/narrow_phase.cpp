@@ -56,8 +56,11 @@ Gap<D> ball_gap(const Vec<D>& ca, double ra, const Vec<D>& cb, double rb) {
 /// World segment of a spherocylinder particle.
 template <int D>
 std::pair<Vec<D>, Vec<D>> segment_of(const Particle<D>& p) {
+  // The ends are -+a e_x in the body frame: to_world() of them, without the product by the zeros
+  // (the same bits, at a third of the cost of the hottest function of a capsule packing).
   const auto& s = static_cast<const SpherocylinderShape<D>&>(*p.shape);
-  return {p.pose.to_world(s.end_a()), p.pose.to_world(s.end_b())};
+  const Vec<D> half = s.half_length() * p.pose.rotation.col(0);
+  return {p.pose.position - half, p.pose.position + half};
 }
 
 /// Gap of two swept balls (segment + radius; a point segment is a ball): paper 004 Eq. 6 in

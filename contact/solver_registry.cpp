@@ -66,6 +66,7 @@ template <int D>
 void SolverRegistry<D>::add_pair(const std::string& fixed_kind, const std::string& mobile_kind,
                                  std::shared_ptr<const ContactSolver<D>> solver) {
   pairs_[{fixed_kind, mobile_kind}].push_back(std::move(solver));
+  picked_.clear();
 }
 
 template <int D>
@@ -84,17 +85,36 @@ const char* wall_kind(const Wall<D>& w) {
   }
   return kPlaneWall;
 }
+/// A body's registry kind: its wall's, its shape's, or a sphere's (a body without a particle).
+template <int D>
+const char* kind_of(const Body<D>& b) {
+  return b.is_wall() ? wall_kind(*b.wall) : b.shaped ? b.shaped->shape->kind() : SphereShape<D>::kKind;
+}
 }  // namespace
 
 template <int D>
 const ContactSolver<D>& SolverRegistry<D>::pick(std::span<const Body<D>> fixed, const Mobile<D>& mobile) const {
   if (pairs_.empty() || fixed.empty()) return *default_;
+  // A front asks for the same few kind combinations millions of times: their answers are kept by
+  // the kinds' name pointers (a miss, or the same name at another address, takes the full path).
+  PickKey key;
+  key.mobile = mobile.shape ? mobile.shape->kind() : SphereShape<D>::kKind;
+  for (std::size_t i = 0; i < fixed.size() && i < key.fixed.size(); ++i) key.fixed[i] = kind_of(fixed[i]);
+  if (fixed.size() == key.fixed.size())
+    for (const auto& [k, solver] : picked_)
+      if (k == key) return *solver;
+  const ContactSolver<D>& solver = pick_by_name(fixed, mobile);
+  if (fixed.size() == key.fixed.size() && picked_.size() < kPickedKept) picked_.push_back({key, &solver});
+  return solver;
+}
+
+template <int D>
+const ContactSolver<D>& SolverRegistry<D>::pick_by_name(std::span<const Body<D>> fixed, const Mobile<D>& mobile) const {
   // A mobile without a shape is a sphere of its radius (the sphere fast path's form), as a fixed
   // body without a particle is: the minimisation solver cannot solve it (it needs the shape).
   const std::string mobile_kind = mobile.shape ? mobile.shape->kind() : SphereShape<D>::kKind;
   const auto solvers_of = [&](const Body<D>& b) -> const std::vector<std::shared_ptr<const ContactSolver<D>>>* {
-    const std::string fixed_kind = b.is_wall() ? wall_kind(*b.wall) : b.shaped ? b.shaped->shape->kind() : SphereShape<D>::kKind;
-    const auto it = pairs_.find({fixed_kind, mobile_kind});
+    const auto it = pairs_.find({kind_of(b), mobile_kind});
     return it == pairs_.end() ? nullptr : &it->second;
   };
   const auto* first = solvers_of(fixed[0]);

@@ -10,6 +10,7 @@
 // plane walls; the ball wrapper spheres (disks) and clusters
 // with walls; the analytic sphere solver, registered last, spheres and walls alone. A 3D capsule
 // placed against a cluster or a cylinder still goes to minimisation.
+#include <array>
 #include <map>
 #include <memory>
 #include <span>
@@ -40,7 +41,10 @@ class SolverRegistry {
   /// With `closed_form` false, minimisation for every problem (no solver registered).
   SolverRegistry(const NarrowPhase<D>& narrow_phase, const MinimisationOptions& options, bool closed_form = true);
 
-  void set_default(std::shared_ptr<const ContactSolver<D>> solver) { default_ = std::move(solver); }
+  void set_default(std::shared_ptr<const ContactSolver<D>> solver) {
+    default_ = std::move(solver);
+    picked_.clear();
+  }
   /// Registers `solver` for (fixed_kind, mobile_kind); it takes precedence over those registered
   /// before it wherever it covers every pair of a problem.
   void add_pair(const std::string& fixed_kind, const std::string& mobile_kind, std::shared_ptr<const ContactSolver<D>> solver);
@@ -53,7 +57,18 @@ class SolverRegistry {
   const ContactSolver<D>& default_solver() const { return *default_; }
 
  private:
+  struct PickKey {
+    std::array<const char*, D> fixed{};  ///< the kinds' names (static strings: compared by address)
+    const char* mobile = nullptr;
+    bool operator==(const PickKey&) const = default;
+  };
+  static constexpr std::size_t kPickedKept = 64;
+  const ContactSolver<D>& pick_by_name(std::span<const Body<D>> fixed, const Mobile<D>& mobile) const;
+
   std::shared_ptr<const ContactSolver<D>> default_;
+  /// Answers of pick() by kind combination. A registry serves one packer (one thread); add_pair
+  /// and set_default clear it.
+  mutable std::vector<std::pair<PickKey, const ContactSolver<D>*>> picked_;
   /// Per pair, its solvers in registration order (the last one first in precedence).
   std::map<std::pair<std::string, std::string>, std::vector<std::shared_ptr<const ContactSolver<D>>>> pairs_;
 };
