@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Wrapper intersection against potential minimisation (paper 004, Sect. 3.1 and 3.2): the same
 scenes packed with `packer.contact_solver: auto` (the closed-form wrapper solvers where they reach,
-contact/*_wrapper_solver.cpp) and `minimisation` (every contact problem by NLopt + FCL), 3 seeds:
+contact/*_wrapper_solver.cpp, and the gap Newton solver for 3D capsules) and `minimisation` (every
+contact problem by NLopt + FCL), 3 seeds:
 particles per second, the fraction filled, the contact accuracy (the largest |gap| among the
 contacts, relative to the smaller circumscribed radius), the largest overlap and the coordination.
 Paper 004, Fig. 6: 2D clusters of 4 disks in a square of side 20 by wrappers, 73 particles at
@@ -69,6 +70,12 @@ CASES = [
        "size": {"distribution": "uniform", "min": 0.5, "max": 1}, "fraction": 2},
       {"shape": "polyhedron", "vertices": [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]],
        "size": {"distribution": "uniform", "min": 0.5, "max": 1}, "fraction": 1}], None, SEEDS, SOLVERS, ""),
+    ("3D capsules, aspect 0.5, cube 20 (gap Newton)", 3, box(3, 20),
+     [{"shape": "spherocylinder", "aspect_ratio": 0.5, "size": U12, "size_on": "circumscribed_radius", "orientation": "random"}],
+     None, SEEDS, SOLVERS, ""),
+    ("3D capsules, aspect 0.5, cube 40 (perez-capsules-3d, gap Newton)", 3, box(3, 40),
+     [{"shape": "spherocylinder", "aspect_ratio": 0.5, "size": U12, "size_on": "circumscribed_radius", "orientation": "random"}],
+     None, [1], SOLVERS, "paper, minimisation: 5,901 particles, 3.90 particles/s, VF 0.4577"),
     ("3D clusters of 4 spheres, cube 40 (Fig. 6)", 3, box(3, 40), [row_cluster(3, 4)], None, [1], SOLVERS,
      "paper, approximate wrappers: 4,778 particles, 172.3 particles/s, VF 0.3668"),
 ]
@@ -143,9 +150,9 @@ def report(argv):
     lines = ["# Wrapper intersection against potential minimisation (issue 10)", ""]
     lines += provenance_lines(FRONTPACK, argv)
     lines += ["", "Every scene packed with `frontpack pack SCENE --seed S -q -o out.csv --record rec.json` (one core; the other",
-              "core of this 2-core machine was busy with builds and fuzzing meanwhile: rates ±30 %), once with",
-              "`packer: {contact_solver: auto}` (the default: the wrapper solvers where they reach, minimisation",
-              "elsewhere) and once with `contact_solver: minimisation` (every problem by NLopt `slsqp` through FCL).",
+              "core of this 2-core machine was busy with builds meanwhile: rates ±30 %), once with",
+              "`packer: {contact_solver: auto}` (the default: the wrapper solvers where they reach, the gap Newton",
+              "solver for 3D capsules, minimisation elsewhere) and once with `contact_solver: minimisation` (every problem by NLopt `slsqp` through FCL).",
               "Scenes: `scenes/`. `fraction` is the area (2D) or volume (3D) fraction of the container; `contact |gap|` the",
               "largest |gap| among the contacting pairs (|gap| <= 1e-6 x the smaller circumscribed radius), relative to",
               "that radius: how exactly the solver made them touch; `overlap` the largest overlap, likewise. Mean ± sd",
