@@ -57,13 +57,15 @@ void newton(Gaps&& gaps, Converged&& converged, Vec<D>& x, std::array<Gap<D>, D>
     if (len > max_step) dx *= max_step / len;
     std::array<Gap<D>, D> g_new;
     const double before = largest(g);
-    bool gained = false;
-    for (int h = 0; h <= halvings && !gained; ++h, dx *= 0.5) {
+    for (int h = 0;; ++h) {
+      if (h > 0) {
+        if (h > halvings) return;
+        dx *= 0.5;
+      }
       gaps(x + dx, g_new);
-      gained = largest(g_new) < before;
+      if (largest(g_new) < before) break;
     }
-    if (!gained) return;
-    x += dx * 2;  // the loop halved it once more after the kept step
+    x += dx;
     g = g_new;
   }
 }

@@ -128,8 +128,8 @@ int GapNewtonSolver<D>::solve(std::span<const Body<D>> fixed, const Mobile<D>& m
   // Needles (a body or the mobile): their equivalent spheres are far from most of their surface,
   // and the full Newton step from there overshoots; damped steps, and where the equivalent
   // spheres' starts found fewer than two positions, the inscribed spheres' starts (near the
-  // middle of the needles), then the circumscribed ones', too. Elsewhere damping costs more (measured: 3D capsules of aspect
-  // 0.5 pack 25 % slower with one halving) than it finds.
+  // middle of the needles), then the circumscribed ones', too. Elsewhere damping costs more than
+  // it finds (measured: 3D capsules of aspect 0.5 pack 25 % slower with one halving).
   const auto elongated = [](const Shape<D>& sh) { return sh.inscribed_radius() < kElongated * sh.bounding_radius(); };
   bool needles = elongated(*mob.shape);
   for (const Body<D>& b : fixed) needles = needles || (b.shaped && elongated(*b.shaped->shape));

@@ -340,9 +340,31 @@ int PolygonWrapperSolver::solve(std::span<const Body<2>> fixed, const Mobile<2>&
   // Frame on the first particle (its reference point): offsets of 1e6 keep their digits.
   const Body<2>* frame = fixed[0].is_wall() ? &fixed[1] : &fixed[0];
   const V o = frame->is_wall() ? frame->wall->point : frame->center;
-  const auto mob = cores_of(mobile.shape.get(), mobile.rotation, V::Zero(), mobile.radius);
+  // The front solves one s0 (the frame's body) against each neighbour with one mobile: the mobile's
+  // cores and s0's wrappers are built once for them. A particle is known by its address, centre
+  // and radius together (the particles' vector may have moved: a stale address must not match).
+  thread_local struct {
+    const Shape<2>* shape = nullptr;
+    Mat<2> rotation = Mat<2>::Identity();
+    double radius = -1;
+    std::vector<RoundedCore<2>> cores;
+    const Particle<2>* first = nullptr;  ///< whose wrappers loci0 holds (none: nullptr)
+    V first_center = V::Zero();
+    double first_radius = -1;
+  } cache;
+  if (cache.shape != mobile.shape.get() || cache.rotation != mobile.rotation || cache.radius != mobile.radius || !cache.shape) {
+    cache.shape = mobile.shape.get(), cache.rotation = mobile.rotation, cache.radius = mobile.radius;
+    cache.cores = cores_of(mobile.shape.get(), mobile.rotation, V::Zero(), mobile.radius);
+    cache.first = nullptr;
+  }
+  const std::vector<RoundedCore<2>>& mob = cache.cores;
   if (mob.empty()) return 0;
-  loci_of(fixed[0], o, mob, mobile.radius, loci0);
+  const Body<2>& b0 = fixed[0];
+  if (b0.is_wall() || !b0.shaped || cache.first != b0.shaped || cache.first_center != b0.center || cache.first_radius != b0.radius) {
+    loci_of(b0, o, mob, mobile.radius, loci0);
+    cache.first = b0.is_wall() ? nullptr : b0.shaped;
+    cache.first_center = b0.center, cache.first_radius = b0.radius;
+  }
   loci_of(fixed[1], o, mob, mobile.radius, loci1);
   if (loci0.empty() || loci1.empty()) return 0;  // e.g. a disk wall too small for the mobile
 
