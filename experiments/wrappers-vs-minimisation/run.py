@@ -196,7 +196,7 @@ def report(argv):
             ax.scatter([x], [y], marker=marker, color="C0" if marker == "o" else "C3", zorder=2)
         if pts:
             ax.annotate(case.split(" (")[0], (pts[0][0], pts[0][1]), fontsize=7, xytext=(4, 3), textcoords="offset points")
-    ax.scatter([], [], marker="o", color="C0", label="wrappers (auto)")
+    ax.scatter([], [], marker="o", color="C0", label="auto (wrappers, gap Newton)")
     ax.scatter([], [], marker="s", color="C3", label="minimisation")
     ax.set_yscale("log")
     ax.set_xlabel("fraction of the container filled")
