@@ -12,6 +12,8 @@ PackingInput read_packing_input(const std::string& packing_path, const std::stri
                                 const std::string& scene_path) {
   PackingInput in;
   if (!scene_path.empty()) in.scene = load_scene(scene_path);
+  if (in.scene && !in.scene->particle_templates.empty())
+    throw std::runtime_error(scene_path + " describes non-spherical particles; " + kSpheresAndDisksOnly);
   const OutputFormat f = format.empty() ? format_from_extension(packing_path) : parse_output_format(format);
   in.dimension = packing_file_dimension(f, packing_path);
   if (in.scene && in.dimension != in.scene->dimension)

@@ -54,13 +54,6 @@ int run_validate_command(const ValidateCommandOptions& o) {
   } catch (...) {  // the scene parser and the readers name file, line and key
     return report_failure(2);
   }
-  if (!in.scene->particle_templates.empty()) {
-    std::fprintf(stderr,
-                 "frontpack: error: %s describes non-spherical particles; validate checks packings of spheres and "
-                 "disks (frontpack pack checks every packing of shapes it makes)\n",
-                 o.scene_path.c_str());
-    return 2;
-  }
   try {
     const Activity doing("validating packing '" + o.packing_path + "'");
     return in.dimension == 2 ? validate<2>(*in.scene, in.packing2, o) : validate<3>(*in.scene, in.packing3, o);

@@ -318,6 +318,8 @@ Packing<D> read_vtu(const std::string& path, const Vec<D>& origin) {
     auto a = attributes(header.substr(at, header.find('>', at) - at));
     arrays[a["Name"]] = a;
   }
+  if (arrays.count("quaternion") && !arrays.count("radius"))  // shapes/io/shape_packing_writers' layout
+    throw std::runtime_error(path + ": holds non-spherical particles (a 'quaternion' array); " + kSpheresAndDisksOnly);
   auto block = [&](const std::string& name, const char* type, int comps) -> const char* {
     const auto it = arrays.find(name);
     if (it == arrays.end()) throw fail("no DataArray '" + name + "'");
@@ -404,6 +406,8 @@ int packing_file_dimension(OutputFormat format, const std::string& path) {
     std::string_view line;
     if (!lines.next(line)) lines.fail("empty file");
     const auto f = split(line, ',');
+    if (f.size() > 1 && trim(f[1]) == "shape_id")  // shapes/io/shape_packing_writers' layout
+      lines.fail("holds non-spherical particles (a 'shape_id' column); " + std::string(kSpheresAndDisksOnly));
     if (f.size() == 5) return 3;
     if (f.size() == 4) return 2;
     lines.fail("expected the header 'id,x,y,z,r' (3D) or 'id,x,y,r' (2D)");

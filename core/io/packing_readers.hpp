@@ -10,6 +10,11 @@
 
 namespace fp {
 
+/// What the readers say of a file of non-spherical particles (shapes/io/shape_packing_writers).
+inline constexpr const char* kSpheresAndDisksOnly =
+    "validate and analyze read packings of spheres and disks only (frontpack pack validates every packing of shapes it "
+    "makes: see its summary and the run record's info.validation)";
+
 /// Reads a D-dimensional packing into the frame of `origin` (the container's frame origin,
 /// core/geometry/local_frame.hpp): centres = absolute - origin, the subtraction done exactly on
 /// the file's text (core/io/exact_decimal.hpp), so a file read in the frame it was written in

@@ -7,6 +7,7 @@
 
 #include "core/io/atomic_file.hpp"
 #include "core/io/exact_decimal.hpp"
+#include "core/io/packing_readers.hpp"
 
 namespace fp {
 namespace {
@@ -182,6 +183,8 @@ Packing<D> packing_from_json(const std::string& text, const std::string& source_
   };
   if (dimension != D)
     throw fail("the file is " + std::to_string(dimension) + "D, expected " + std::to_string(D) + "D");
+  if (j.contains("shapes"))  // the json output of a scene of shapes (shapes/io/shape_packing_writers)
+    throw fail("holds non-spherical particles (a 'shapes' list); " + std::string(kSpheresAndDisksOnly));
   if (!j.contains("particles") || !j["particles"].is_object())
     throw fail("no 'particles' in this file (a record-only run record? use the json output format)");
   const Json& p = j["particles"];

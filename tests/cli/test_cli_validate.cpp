@@ -135,6 +135,26 @@ TEST_F(CliValidate, ASceneOfShapesIsRefused) {
   EXPECT_NE(r.err.find("non-spherical"), std::string::npos) << r.err;
 }
 
+// A packing of shapes (the files `pack` writes for a scene of capsules), given to validate and to
+// analyze: refused with exit code 2 and a message that says why (not a layout error), each format.
+TEST_F(CliValidate, PackingsOfShapesAreRefusedWithTheReason) {
+  write_bytes(dir.work() / "caps.yaml",
+              "dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [0.2, 0.2, 0.2]}\n"
+              "particles:\n  - shape: spherocylinder\n    aspect_ratio: 0.5\n"
+              "    size: {distribution: uniform, min: 0.02, max: 0.03}\nstop: {particles: 10}\n");
+  const struct { const char* file; const char* why; } cases[] = {
+      {"caps.csv", "'shape_id' column"}, {"caps.json", "'shapes' list"}, {"caps.vtu", "'quaternion' array"}};
+  for (const auto& c : cases) {
+    ASSERT_EQ(run_frontpack(dir, std::string("pack caps.yaml -q -o ") + c.file).exit_code, 0) << c.file;
+    for (const std::string& command : {std::string("analyze ") + c.file, std::string("validate ") + c.file + " --scene s.yaml"}) {
+      const RunResult r = run_frontpack(dir, command);
+      EXPECT_EQ(r.exit_code, 2) << command << r.out << r.err;
+      EXPECT_NE(r.err.find("holds non-spherical particles"), std::string::npos) << command << r.err;
+      EXPECT_NE(r.err.find(c.why), std::string::npos) << command << r.err;
+    }
+  }
+}
+
 TEST_F(CliValidate, BadInputExitsTwo) {
   EXPECT_EQ(run_frontpack(dir, "validate missing.csv --scene s.yaml").exit_code, 2);
   EXPECT_EQ(run_frontpack(dir, "validate p.csv").exit_code, 2);  // --scene is required
