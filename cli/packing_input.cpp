@@ -5,16 +5,30 @@
 #include "core/io/output_format.hpp"
 #include "core/io/packing_readers.hpp"
 #include "core/io/scene_yaml.hpp"
+#include "shapes/io/shape_packing_reader.hpp"
 
 namespace fp {
 
-PackingInput read_packing_input(const std::string& packing_path, const std::string& format,
-                                const std::string& scene_path) {
+PackingInput read_packing_input(const std::string& packing_path, const std::string& format, const std::string& scene_path,
+                                bool shapes_too) {
   PackingInput in;
   if (!scene_path.empty()) in.scene = load_scene(scene_path);
-  if (in.scene && !in.scene->particle_templates.empty())
-    throw std::runtime_error(scene_path + " describes non-spherical particles; " + kSpheresAndDisksOnly);
   const OutputFormat f = format.empty() ? format_from_extension(packing_path) : parse_output_format(format);
+  if (in.scene && !in.scene->particle_templates.empty()) {
+    if (!shapes_too) throw std::runtime_error(scene_path + " describes non-spherical particles; analyze reads packings of spheres and disks");
+    if (f != OutputFormat::Json)
+      throw std::runtime_error(packing_path + ": " + scene_path +
+                               " describes non-spherical particles: give the packing's json output, which carries the shapes");
+    const std::string text = read_packing_text(packing_path);
+    if (!is_shape_packing_json(text))
+      throw std::runtime_error(packing_path + ": not the json output of a packing of shapes (no 'shapes' list), which " +
+                               scene_path + " describes");
+    in.shapes = true;
+    in.dimension = in.scene->dimension;
+    if (in.dimension == 2) in.shapes2 = read_shape_packing_json<2>(text, packing_path, in.scene->container<2>()->origin());
+    else in.shapes3 = read_shape_packing_json<3>(text, packing_path, in.scene->container<3>()->origin());
+    return in;
+  }
   in.dimension = packing_file_dimension(f, packing_path);
   if (in.scene && in.dimension != in.scene->dimension)
     throw std::runtime_error(packing_path + " holds a " + std::to_string(in.dimension) + "D packing but " + scene_path +

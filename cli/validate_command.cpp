@@ -2,9 +2,13 @@
 
 #include <cstdio>
 #include <exception>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "cli/failure_report.hpp"
 #include "cli/packing_input.hpp"
+#include "contact/shape_validation.hpp"
 #include "core/metrics/validate.hpp"
 
 namespace fp {
@@ -44,18 +48,51 @@ int validate(const Scene& scene, const Packing<D>& P, const ValidateCommandOptio
   return r.ok ? 0 : 3;
 }
 
+/// A packing of shapes: the verdict of `frontpack pack` for shapes (contact/shape_validation.hpp),
+/// same tolerance (the scene's gap_tolerance unless --tolerance), same size and mix tests.
+template <int D>
+int validate_shape_packing(const Scene& scene, const ShapePacking<D>& P, const ValidateCommandOptions& o) {
+  const Container<D>& container = *scene.container<D>();
+  const double tol = o.tolerance >= 0 ? o.tolerance : scene.packer.minimisation.gap_tolerance;
+  std::vector<RequestedTemplate> requested;  // template ids follow the scene's list
+  for (const ParticleTemplateSpec& t : scene.particle_templates) requested.push_back({t.size.get(), t.fraction});
+  for (const Particle<D>& p : P.particles)
+    if (static_cast<std::size_t>(p.template_id) >= requested.size())
+      throw std::runtime_error(o.packing_path + ": shape_id " + std::to_string(p.template_id) + " but " + scene.source_path +
+                               " has " + std::to_string(requested.size()) + " particle templates");
+  const ShapeValidation v = validate_shapes<D>(P, container, tol, requested, o.ks_alpha);
+  if (!o.quiet) {
+    std::printf("frontpack validate   %s   against %s (%dD, particles of shapes)\n", o.packing_path.c_str(),
+                scene.source_path.c_str(), D);
+    std::printf("  container      %s\n", container.describe().c_str());
+    std::printf("  particles      %zu; %llu pairs checked\n", P.size(), static_cast<unsigned long long>(v.pairs_checked));
+    std::printf("  overlaps       %llu beyond %.3g of the smaller circumscribed radius   (max overlap %.3g)\n",
+                static_cast<unsigned long long>(v.overlaps), tol, v.max_overlap_rel);
+    std::printf("  outside        %llu   (max protrusion %.3g of the circumscribed radius)\n",
+                static_cast<unsigned long long>(v.outside), v.max_outside_rel);
+    std::printf("  contacts       %llu, %llu with the walls   (coordination %.3f)\n", static_cast<unsigned long long>(v.contacts),
+                static_cast<unsigned long long>(v.wall_contacts), v.mean_coordination);
+    std::printf("  result         %s\n", v.summary().c_str());
+  } else if (!v.ok) {
+    std::fprintf(stderr, "frontpack: error: %s: %s\n", o.packing_path.c_str(), v.summary().c_str());
+  }
+  return v.ok ? 0 : 3;
+}
+
 }  // namespace
 
 int run_validate_command(const ValidateCommandOptions& o) {
   PackingInput in;
   try {
     const Activity doing("reading packing '" + o.packing_path + "'");
-    in = read_packing_input(o.packing_path, o.format, o.scene_path);
+    in = read_packing_input(o.packing_path, o.format, o.scene_path, /*shapes_too=*/true);
   } catch (...) {  // the scene parser and the readers name file, line and key
     return report_failure(2);
   }
   try {
     const Activity doing("validating packing '" + o.packing_path + "'");
+    if (in.shapes)
+      return in.dimension == 2 ? validate_shape_packing<2>(*in.scene, in.shapes2, o) : validate_shape_packing<3>(*in.scene, in.shapes3, o);
     return in.dimension == 2 ? validate<2>(*in.scene, in.packing2, o) : validate<3>(*in.scene, in.packing3, o);
   } catch (...) {
     return report_failure(1);

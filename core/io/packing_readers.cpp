@@ -429,6 +429,8 @@ Packing<D> read_packing_in_own_frame(OutputFormat format, const std::string& pat
   return origin.isZero() ? p : read_packing<D>(format, path, origin);
 }
 
+std::string read_packing_text(const std::string& path) { return read_whole_file(path); }
+
 template Packing<2> read_packing<2>(OutputFormat, const std::string&, const Vec2&);
 template Packing<3> read_packing<3>(OutputFormat, const std::string&, const Vec3&);
 template Packing<2> read_packing_in_own_frame<2>(OutputFormat, const std::string&);

@@ -12,8 +12,12 @@ namespace fp {
 
 /// What the readers say of a file of non-spherical particles (shapes/io/shape_packing_writers).
 inline constexpr const char* kSpheresAndDisksOnly =
-    "validate and analyze read packings of spheres and disks only (frontpack pack validates every packing of shapes it "
-    "makes: see its summary and the run record's info.validation)";
+    "these readers take packings of spheres and disks; a packing of shapes is checked from its json output (which "
+    "carries the shapes) with the scene it fills: frontpack validate PACKING.json --scene SCENE";
+
+/// The whole text of a packing file; std::runtime_error naming it if it is missing, unreadable or
+/// not a regular file.
+std::string read_packing_text(const std::string& path);
 
 /// Reads a D-dimensional packing into the frame of `origin` (the container's frame origin,
 /// core/geometry/local_frame.hpp): centres = absolute - origin, the subtraction done exactly on

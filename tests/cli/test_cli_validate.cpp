@@ -1,7 +1,7 @@
 // `frontpack validate`: a packing written by `pack` passes in every format; planted defects (an
 // overlap of 1e-8 of the smaller radius, a particle 1e-8 r outside the container, a radius out of
 // range, a distorted size distribution) and a file without particles fail with exit 3 and the
-// offender's id; bad input (and a scene of non-spherical particles) exits 2.
+// offender's id; bad input exits 2. Packings of shapes: from their json output and scene.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -153,6 +153,59 @@ TEST_F(CliValidate, PackingsOfShapesAreRefusedWithTheReason) {
       EXPECT_NE(r.err.find(c.why), std::string::npos) << command << r.err;
     }
   }
+}
+
+// A packing of shapes, from its json output and its scene: the same verdict as pack's (ok, with
+// the contacts pack counted); a particle moved onto another fails with exit code 3; 1e9 from the
+// origin it still passes (positions re-read exactly); other formats and analyze are refused.
+TEST_F(CliValidate, PackingsOfShapesFromTheirJsonOutput) {
+  const auto scene = [](const std::string& lo, const std::string& hi) {
+    return "dimension: 3\ncontainer: {type: box, min: [" + lo + ", " + lo + ", " + lo + "], max: [" + hi + ", " + hi + ", " + hi +
+           "]}\nparticles:\n  - shape: spherocylinder\n    aspect_ratio: 0.5\n"
+           "    size: {distribution: uniform, min: 0.02, max: 0.03}\n  - shape: cluster\n    centers: [[0, 0, 0], [1, 0, 0]]\n"
+           "    radii: [0.6, 0.6]\n    size: {distribution: uniform, min: 0.02, max: 0.03}\nstop: {particles: 60}\n";
+  };
+  write_bytes(dir.work() / "caps.yaml", scene("0", "0.2"));
+  ASSERT_EQ(run_frontpack(dir, "pack caps.yaml -q -o caps.json --record rec.json").exit_code, 0);
+  const RunResult ok = run_frontpack(dir, "validate caps.json --scene caps.yaml");
+  EXPECT_EQ(ok.exit_code, 0) << ok.out << ok.err;
+  EXPECT_NE(ok.out.find("particles of shapes"), std::string::npos) << ok.out;
+  EXPECT_NE(ok.out.find("particles      60;"), std::string::npos) << ok.out;
+  const std::string record = read_bytes(dir.work() / "rec.json");
+  const std::size_t at = record.find("\"contacts\": ");
+  ASSERT_NE(at, std::string::npos);
+  const std::string contacts = record.substr(at + 12, record.find_first_of(",\n}", at + 12) - at - 12);
+  EXPECT_NE(ok.out.find("contacts       " + contacts + ","), std::string::npos) << "pack counted " << contacts << "\n" << ok.out;
+
+  // Particle 1 moved onto particle 0: an overlap the validator must find.
+  std::string text = read_bytes(dir.work() / "caps.json");
+  const auto position_of = [&](int id) {
+    const std::size_t line = text.find("{\"id\": " + std::to_string(id) + ",");
+    const std::size_t from = text.find("\"position\": [", line), to = text.find(']', from);
+    return std::make_pair(from, to + 1 - from);
+  };
+  const auto [from0, length0] = position_of(0);
+  const std::string first = text.substr(from0, length0);
+  const auto [from1, length1] = position_of(1);
+  text.replace(from1, length1, first);
+  write_bytes(dir.work() / "moved.json", text);
+  const RunResult bad = run_frontpack(dir, "validate moved.json --scene caps.yaml");
+  EXPECT_EQ(bad.exit_code, 3) << bad.out << bad.err;
+  EXPECT_NE(bad.out.find("FAILED"), std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find("pair 0-1)"), std::string::npos) << bad.out;  // the worst: the planted pair
+
+  write_bytes(dir.work() / "far.yaml", scene("1000000000", "1000000000.2"));
+  ASSERT_EQ(run_frontpack(dir, "pack far.yaml -q -o far.json").exit_code, 0);
+  const RunResult far = run_frontpack(dir, "validate far.json --scene far.yaml");
+  EXPECT_EQ(far.exit_code, 0) << far.out << far.err;
+
+  ASSERT_EQ(run_frontpack(dir, "pack caps.yaml -q -o caps.csv").exit_code, 0);
+  const RunResult csv = run_frontpack(dir, "validate caps.csv --scene caps.yaml");
+  EXPECT_EQ(csv.exit_code, 2) << csv.out << csv.err;
+  EXPECT_NE(csv.err.find("give the packing's json output"), std::string::npos) << csv.err;
+  const RunResult analyze = run_frontpack(dir, "analyze caps.json --scene caps.yaml");
+  EXPECT_EQ(analyze.exit_code, 2) << analyze.out << analyze.err;
+  EXPECT_NE(analyze.err.find("non-spherical"), std::string::npos) << analyze.err;
 }
 
 TEST_F(CliValidate, BadInputExitsTwo) {
