@@ -90,14 +90,13 @@ void write_run_record(const std::string& path, const RunRecord& record) {
   write_text_file_atomically(path, run_record_json(record));
 }
 
-namespace {
-
-/// nlohmann's message without its "[json.exception.parse_error.101] " prefix (an internal id).
 std::string json_error_text(const char* what) {
   const std::string_view s(what);
   const std::size_t close = s.find("] ");
   return std::string(s.starts_with("[json.exception.") && close != std::string_view::npos ? s.substr(close + 2) : s);
 }
+
+namespace {
 
 Json parse_record(const std::string& text, const std::string& source_name, int& dimension) {
   Json j;

@@ -67,4 +67,8 @@ Packing<D> packing_from_json(const std::string& text, const std::string& source_
 /// The "dimension" of a run record or json output. Throws like packing_from_json.
 int run_record_dimension(const std::string& text, const std::string& source_name);
 
+/// A JSON parser's message without nlohmann's "[json.exception.parse_error.101] " prefix (an
+/// internal id): what a user is shown.
+std::string json_error_text(const char* what);
+
 }  // namespace fp

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/io/exact_decimal.hpp"
+#include "core/io/run_record.hpp"
 #include "shapes/cluster_shape.hpp"
 #include "shapes/convex_polytope_shape.hpp"
 #include "shapes/cylinder_shape.hpp"
@@ -100,6 +101,13 @@ struct Reader {
       fail(where, n ? "expected a list of " + std::to_string(n) + " numbers" : std::string("expected a list"));
     return j;
   }
+  /// A shape of finite, positive circumscribed radius and measure (huge numbers overflow).
+  template <int D>
+  void finite_shape(const Shape<D>& s, const std::string& where) const {
+    const double r = s.bounding_radius(), m = s.measure();
+    if (!(std::isfinite(r) && r > 0 && std::isfinite(m) && m > 0))
+      fail(where, "gives a shape of circumscribed radius " + std::to_string(r) + " and measure " + std::to_string(m));
+  }
   template <int K>
   Eigen::Matrix<double, K, 1> point(const Json& j, const std::string& where) const {
     list(j, where, K);
@@ -176,7 +184,7 @@ ShapePacking<D> read_shape_packing_json(const std::string& text, const std::stri
   try {
     j = Json::parse(text);
   } catch (const Json::exception& e) {
-    throw std::runtime_error(source_name + ": invalid JSON: " + e.what());
+    throw std::runtime_error(source_name + ": invalid JSON: " + json_error_text(e.what()));
   }
   const Json& dim = r.member(j, "dimension", "top level");
   if (!dim.is_number_integer() || dim.get<int>() != D)
@@ -200,8 +208,10 @@ ShapePacking<D> read_shape_packing_json(const std::string& text, const std::stri
       templates.push_back({});
       continue;
     }
-    templates.push_back({r.shape<D>(def, where + ".definition"),
-                         r.positive(r.member(s, "representative_size", where), where + ".representative_size")});
+    Template made{r.shape<D>(def, where + ".definition"),
+                  r.positive(r.member(s, "representative_size", where), where + ".representative_size")};
+    r.finite_shape(*made.shape, where + ".definition");
+    templates.push_back(std::move(made));
   }
 
   const Json& particles = r.list(r.member(j, "particles", "top level"), "particles");
@@ -230,6 +240,7 @@ ShapePacking<D> read_shape_packing_json(const std::string& text, const std::stri
       if (x.z() != 0 || q[1] != 0 || q[2] != 0) r.fail(where, "a 2D particle has z = 0 and a rotation about z");
     Particle<D> particle;
     particle.shape = size == t.size ? t.shape : t.shape->scaled(size / t.size);
+    r.finite_shape(*particle.shape, where + ".size");
     particle.template_id = id.get<int>();
     particle.size = size;
     particle.pose.rotation = rotation_of<D>(q);
