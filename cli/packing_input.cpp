@@ -15,7 +15,7 @@ PackingInput read_packing_input(const std::string& packing_path, const std::stri
   if (!scene_path.empty()) in.scene = load_scene(scene_path);
   const OutputFormat f = format.empty() ? format_from_extension(packing_path) : parse_output_format(format);
   if (in.scene && !in.scene->particle_templates.empty()) {
-    if (!shapes_too) throw std::runtime_error(scene_path + " describes non-spherical particles; analyze reads packings of spheres and disks");
+    if (!shapes_too) throw std::runtime_error(scene_path + " describes non-spherical particles: " + kSpheresAndDisksOnly);
     if (f != OutputFormat::Json)
       throw std::runtime_error(packing_path + ": " + scene_path +
                                " describes non-spherical particles: give the packing's json output, which carries the shapes");

@@ -12,8 +12,8 @@ namespace fp {
 
 /// What the readers say of a file of non-spherical particles (shapes/io/shape_packing_writers).
 inline constexpr const char* kSpheresAndDisksOnly =
-    "these readers take packings of spheres and disks; a packing of shapes is checked from its json output (which "
-    "carries the shapes) with the scene it fills: frontpack validate PACKING.json --scene SCENE";
+    "these readers take packings of spheres and disks; a packing of shapes is read from its json output (which "
+    "carries the shapes) with the scene it fills: frontpack validate (or analyze) PACKING.json --scene SCENE";
 
 /// The whole text of a packing file; std::runtime_error naming it if it is missing, unreadable or
 /// not a regular file.

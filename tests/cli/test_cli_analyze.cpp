@@ -1,6 +1,6 @@
 // `frontpack analyze`: the table, the JSON (byte-identical for the same packing), the figures
 // through Debian's python3-matplotlib, and the failure paths (no interpreter: exit 1 with the
-// numeric analysis still written; bad input: exit 2, nothing written).
+// numeric analysis still written; bad input: exit 2, nothing written); packings of shapes.
 #include <gtest/gtest.h>
 
 #include "cli_test_util.hpp"
@@ -36,6 +36,46 @@ TEST_F(CliAnalyze, TableAndJsonWithTheScene) {
   // Same packing, same bytes.
   ASSERT_EQ(run_frontpack(dir, "analyze p.csv --scene s.yaml --json b.json -q").exit_code, 0);
   EXPECT_EQ(json, read_bytes(dir.work() / "b.json"));
+}
+
+// A packing of shapes, from its json output and its scene: pack's figures (the same fraction and
+// contact count as its record), and the orientation order of the body axes: 1 for capsules all of
+// one fixed orientation, near 0 for random ones. --plots is refused (exit 2, nothing drawn).
+TEST_F(CliAnalyze, PackingsOfShapesFromTheirJsonOutput) {
+  const auto scene = [](const std::string& orientation, int n) {
+    return "dimension: 3\nseed: 3\ncontainer: {type: box, min: [0, 0, 0], max: [0.4, 0.4, 0.4]}\n"
+           "particles:\n  - shape: spherocylinder\n    aspect_ratio: 0.4\n"
+           "    size: {distribution: uniform, min: 0.02, max: 0.03}\n    orientation: " + orientation +
+           "\nstop: {particles: " + std::to_string(n) + "}\n";
+  };
+  const auto number_after = [](const std::string& text, const std::string& key) {
+    const std::size_t at = text.find(key);
+    EXPECT_NE(at, std::string::npos) << key;
+    return at == std::string::npos ? -1.0 : std::stod(text.substr(at + key.size()));
+  };
+  write_bytes(dir.work() / "fixed.yaml", scene("{fixed: [0.9238795325112867, 0, 0.3826834323650898, 0]}", 80));
+  ASSERT_EQ(run_frontpack(dir, "pack fixed.yaml -q -o fixed.json --record fixed-rec.json").exit_code, 0);
+  const RunResult fixed = run_frontpack(dir, "analyze fixed.json --scene fixed.yaml --json fixed-a.json");
+  ASSERT_EQ(fixed.exit_code, 0) << fixed.out << fixed.err;
+  for (const char* row : {"particles of shapes", "VF container", "coordination z", "orientation order", "validate: ok"})
+    EXPECT_NE(fixed.out.find(row), std::string::npos) << row << " not in\n" << fixed.out;
+  const std::string a = read_bytes(dir.work() / "fixed-a.json"), rec = read_bytes(dir.work() / "fixed-rec.json");
+  EXPECT_NEAR(number_after(a, "\"orientation_order\": "), 1.0, 1e-12) << a;
+  EXPECT_NEAR(number_after(a, "\"volume_fraction_container\": "), number_after(rec, "\"volume_fraction_container\": "), 1e-12);
+  EXPECT_EQ(number_after(a, "\"contacts\": "), number_after(rec, "\"contacts\": "));
+
+  write_bytes(dir.work() / "random.yaml", scene("random", 400));
+  ASSERT_EQ(run_frontpack(dir, "pack random.yaml -q -o random.json").exit_code, 0);
+  ASSERT_EQ(run_frontpack(dir, "analyze random.json --scene random.yaml --json random-a.json -q").exit_code, 0);
+  const double s = number_after(read_bytes(dir.work() / "random-a.json"), "\"orientation_order\": ");
+  EXPECT_GE(s, 0.0);
+  EXPECT_LT(s, 0.15);  // isotropic: the largest eigenvalue's bias is ~1/sqrt(N)
+
+  fs::create_directories(dir.work() / "plots");
+  const RunResult plots = run_frontpack(dir, "analyze random.json --scene random.yaml --plots plots");
+  EXPECT_EQ(plots.exit_code, 2) << plots.out << plots.err;
+  EXPECT_NE(plots.err.find("option --plots"), std::string::npos) << plots.err;
+  EXPECT_TRUE(fs::is_empty(dir.work() / "plots"));
 }
 
 TEST_F(CliAnalyze, WithoutASceneTheBoundingBoxStandsIn) {
