@@ -161,15 +161,11 @@ template <int D>
 int analyze_shapes(const Scene& scene, const ShapePacking<D>& P, const AnalyzeCommandOptions& o) {
   const Container<D>& container = *scene.container<D>();
   const double tol = o.tolerance >= 0 ? o.tolerance : scene.packer.minimisation.gap_tolerance;
-  std::vector<RequestedTemplate> requested;  // template ids follow the scene's list
-  for (const ParticleTemplateSpec& t : scene.particle_templates) requested.push_back({t.size.get(), t.fraction});
+  const std::vector<RequestedTemplate> requested = requested_templates(scene);
   std::vector<std::uint64_t> count(requested.size(), 0);
   double solid = 0;
   std::vector<Vec<D>> axes;
   for (const Particle<D>& p : P.particles) {
-    if (static_cast<std::size_t>(p.template_id) >= requested.size())
-      throw std::runtime_error(o.packing_path + ": shape_id " + std::to_string(p.template_id) + " but " + scene.source_path +
-                               " has " + std::to_string(requested.size()) + " particle templates");
     ++count[static_cast<std::size_t>(p.template_id)];
     solid += p.shape->measure();
     axes.push_back(p.pose.rotation.col(0));

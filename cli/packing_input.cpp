@@ -27,6 +27,16 @@ PackingInput read_packing_input(const std::string& packing_path, const std::stri
     in.dimension = in.scene->dimension;
     if (in.dimension == 2) in.shapes2 = read_shape_packing_json<2>(text, packing_path, in.scene->container<2>()->origin());
     else in.shapes3 = read_shape_packing_json<3>(text, packing_path, in.scene->container<3>()->origin());
+    const std::size_t templates = in.scene->particle_templates.size();
+    const auto check_ids = [&](const auto& particles) {  // the file's shape ids name the scene's templates
+      for (std::size_t i = 0; i < particles.size(); ++i)
+        if (static_cast<std::size_t>(particles[i].template_id) >= templates)
+          throw std::runtime_error(packing_path + ": particles[" + std::to_string(i) + "].shape_id is " +
+                                   std::to_string(particles[i].template_id) + " but " + scene_path + " has " +
+                                   std::to_string(templates) + " particle templates");
+    };
+    if (in.dimension == 2) check_ids(in.shapes2.particles);
+    else check_ids(in.shapes3.particles);
     return in;
   }
   in.dimension = packing_file_dimension(f, packing_path);

@@ -51,9 +51,7 @@ int run_shape_pack(const Scene& scene, const PackCommandOptions& o) {
 
   const Activity checking("validating the packing of '" + scene.source_path + "'");
   const auto t_check = Clock::now();
-  std::vector<RequestedTemplate> requested;  // template ids follow the scene's list
-  for (const ParticleTemplateSpec& t : scene.particle_templates) requested.push_back({t.size.get(), t.fraction});
-  const ShapeValidation v = validate_shapes<D>(P, container, res.gap_tolerance, requested);
+  const ShapeValidation v = validate_shapes<D>(P, container, res.gap_tolerance, requested_templates(scene));
   const double check_seconds = since(t_check);
   const double vf = res.solid_measure / container.measure();
   const double n = static_cast<double>(P.size());

@@ -54,12 +54,7 @@ template <int D>
 int validate_shape_packing(const Scene& scene, const ShapePacking<D>& P, const ValidateCommandOptions& o) {
   const Container<D>& container = *scene.container<D>();
   const double tol = o.tolerance >= 0 ? o.tolerance : scene.packer.minimisation.gap_tolerance;
-  std::vector<RequestedTemplate> requested;  // template ids follow the scene's list
-  for (const ParticleTemplateSpec& t : scene.particle_templates) requested.push_back({t.size.get(), t.fraction});
-  for (const Particle<D>& p : P.particles)
-    if (static_cast<std::size_t>(p.template_id) >= requested.size())
-      throw std::runtime_error(o.packing_path + ": shape_id " + std::to_string(p.template_id) + " but " + scene.source_path +
-                               " has " + std::to_string(requested.size()) + " particle templates");
+  const std::vector<RequestedTemplate> requested = requested_templates(scene);
   const ShapeValidation v = validate_shapes<D>(P, container, tol, requested, o.ks_alpha);
   if (!o.quiet) {
     std::printf("frontpack validate   %s   against %s (%dD, particles of shapes)\n", o.packing_path.c_str(),

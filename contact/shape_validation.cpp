@@ -10,6 +10,12 @@
 
 namespace fp {
 
+std::vector<RequestedTemplate> requested_templates(const Scene& scene) {
+  std::vector<RequestedTemplate> requested;  // template ids follow the scene's list
+  for (const ParticleTemplateSpec& t : scene.particle_templates) requested.push_back({t.size.get(), t.fraction});
+  return requested;
+}
+
 bool ShapeValidation::sizes_ok() const {
   if (sizes_out_of_range) return false;
   const double level = tests > 0 ? sizes_alpha / tests : sizes_alpha;

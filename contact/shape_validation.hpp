@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/geometry/container.hpp"
+#include "core/io/scene.hpp"
 #include "core/metrics/radii_fit.hpp"
 #include "core/metrics/validate.hpp"
 #include "core/sampling/chi_square_test.hpp"
@@ -51,6 +52,9 @@ struct RequestedTemplate {
   const RadiusDistribution* size = nullptr;
   double fraction = 1.0;
 };
+
+/// What a scene of shapes asks for, per template id (its list of particle templates).
+std::vector<RequestedTemplate> requested_templates(const Scene& scene);
 
 /// Without `requested` only overlaps, containment and emptiness are checked.
 template <int D>

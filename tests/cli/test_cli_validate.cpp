@@ -199,6 +199,14 @@ TEST_F(CliValidate, PackingsOfShapesFromTheirJsonOutput) {
   const RunResult far = run_frontpack(dir, "validate far.json --scene far.yaml");
   EXPECT_EQ(far.exit_code, 0) << far.out << far.err;
 
+  // A scene with fewer templates than the file names: bad input.
+  std::string one_template = scene("0", "0.2");
+  one_template.erase(one_template.find("  - shape: cluster"), one_template.find("stop:") - one_template.find("  - shape: cluster"));
+  write_bytes(dir.work() / "one.yaml", one_template);
+  const RunResult ids = run_frontpack(dir, "validate caps.json --scene one.yaml");
+  EXPECT_EQ(ids.exit_code, 2) << ids.out << ids.err;
+  EXPECT_NE(ids.err.find("shape_id is 1 but one.yaml has 1 particle templates"), std::string::npos) << ids.err;
+
   ASSERT_EQ(run_frontpack(dir, "pack caps.yaml -q -o caps.csv").exit_code, 0);
   const RunResult csv = run_frontpack(dir, "validate caps.csv --scene caps.yaml");
   EXPECT_EQ(csv.exit_code, 2) << csv.out << csv.err;
