@@ -2,7 +2,7 @@
 
 #include "cli/failure_report.hpp"
 #include "cli/packing_input.hpp"
-#include "cli/progress_line.hpp"
+#include "cli/pack_run_steps.hpp"
 #include "cli/run_record_start.hpp"
 #include "cli/shape_pack_command.hpp"
 
@@ -71,12 +71,7 @@ void apply_overrides(Scene& scene, const PackCommandOptions& o) {
 template <int D>
 int run(const Scene& scene, const PackCommandOptions& o) {
   const Container<D>& container = *scene.container<D>();
-  ProgressLine progress(o.progress);
-  ProgressFn progress_fn;
-  if (progress.on()) progress_fn = [&](std::uint64_t n, double t, double vf) { progress(n, t, vf); };
-
-  PackResult<D> res = pack<D>(scene, progress_fn);
-  progress.finish();
+  const PackResult<D> res = pack_with_progress(o.progress, [&](const ProgressFn& progress) { return pack<D>(scene, progress); });
   const Packing<D>& P = res.packing;
 
   // Every figure of `frontpack analyze`, from the same code, the independent validation included.
@@ -116,15 +111,9 @@ int run(const Scene& scene, const PackCommandOptions& o) {
   rec.counters.insert(rec.counters.end(), extra.begin(), extra.end());
   rec.info = {{"stop_reason", to_string(res.stop)}, {"validation", vr.ok ? "ok" : "FAILED"}, {"radii_test", vr.radii.test}};
 
-  const auto t_write = Clock::now();
-  {
-    const Activity writing("writing the outputs of '" + scene.source_path + "'");
-    AtomicFileGroup all_or_nothing;  // every output and the record, or none of them
-    for (const OutputSpec& out : scene.outputs) write_packing<D>(parse_output_format(out.format), out.path, P, rec);
-    if (!o.record_path.empty()) write_run_record(o.record_path, rec);
-    all_or_nothing.commit();
-  }
-  const double write_seconds = since(t_write);
+  const double write_seconds = write_outputs(scene, o.record_path, rec, [&](OutputFormat format, const std::string& path) {
+    write_packing<D>(format, path, P, rec);
+  });
 
   if (!o.quiet) {
     print_run_header<D>(scene, container);
@@ -137,8 +126,7 @@ int run(const Scene& scene, const PackCommandOptions& o) {
                                                 : "FAILED (see above)");
     std::printf("  time           pack %.3f s (%.0f particles/s), metrics %.3f s, write %.3f s\n", res.seconds,
                 res.seconds > 0 ? P.size() / res.seconds : 0.0, metrics_seconds, write_seconds);
-    for (const OutputSpec& out : scene.outputs) std::printf("  output         %s (%s)\n", out.path.c_str(), out.format.c_str());
-    if (!o.record_path.empty()) std::printf("  run record     %s\n", o.record_path.c_str());
+    print_output_lines(scene, o.record_path);
   }
   if (!vr.ok) {
     std::fprintf(stderr, "frontpack: error: the packing failed validation:\n%s\n", vr.summary().c_str());

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cli/failure_report.hpp"
-#include "cli/progress_line.hpp"
+#include "cli/pack_run_steps.hpp"
 #include "cli/run_record_start.hpp"
 #include "contact/shape_validation.hpp"
 #include "core/io/atomic_file.hpp"
@@ -42,11 +42,8 @@ void check_shape_scene(const Scene& scene) {
 template <int D>
 int run_shape_pack(const Scene& scene, const PackCommandOptions& o) {
   const Container<D>& container = *scene.container<D>();
-  ProgressLine progress(o.progress);
-  ProgressFn progress_fn;
-  if (progress.on()) progress_fn = [&](std::uint64_t n, double t, double vf) { progress(n, t, vf); };
-  ShapePackResult<D> res = pack_shape_scene<D>(scene, progress_fn);
-  progress.finish();
+  const ShapePackResult<D> res =
+      pack_with_progress(o.progress, [&](const ProgressFn& progress) { return pack_shape_scene<D>(scene, progress); });
   const ShapePacking<D>& P = res.packing;
 
   const Activity checking("validating the packing of '" + scene.source_path + "'");
@@ -81,15 +78,9 @@ int run_shape_pack(const Scene& scene, const PackCommandOptions& o) {
               {"minimisation_algorithm", scene.packer.minimisation.algorithm},
               {"contact_solver", scene.packer.contact_solver == ContactSolverChoice::Auto ? "auto" : "minimisation"}};
 
-  const auto t_write = Clock::now();
-  {
-    const Activity writing("writing the outputs of '" + scene.source_path + "'");
-    AtomicFileGroup all_or_nothing;  // every output and the record, or none of them
-    for (const OutputSpec& out : scene.outputs) write_shape_packing<D>(parse_output_format(out.format), out.path, P, rec);
-    if (!o.record_path.empty()) write_run_record(o.record_path, rec);
-    all_or_nothing.commit();
-  }
-  const double write_seconds = since(t_write);
+  const double write_seconds = write_outputs(scene, o.record_path, rec, [&](OutputFormat format, const std::string& path) {
+    write_shape_packing<D>(format, path, P, rec);
+  });
 
   if (!o.quiet) {
     print_run_header<D>(scene, container);
@@ -106,8 +97,7 @@ int run_shape_pack(const Scene& scene, const PackCommandOptions& o) {
     std::printf("  validation     %s\n", v.summary().c_str());
     std::printf("  time           pack %.3f s (%.1f particles/s), validation %.3f s, write %.3f s\n", res.seconds,
                 res.seconds > 0 ? n / res.seconds : 0.0, check_seconds, write_seconds);
-    for (const OutputSpec& out : scene.outputs) std::printf("  output         %s (%s)\n", out.path.c_str(), out.format.c_str());
-    if (!o.record_path.empty()) std::printf("  run record     %s\n", o.record_path.c_str());
+    print_output_lines(scene, o.record_path);
   }
   if (!v.ok) {
     std::fprintf(stderr, "frontpack: error: the packing failed validation: %s\n", v.summary().c_str());
