@@ -78,8 +78,9 @@ std::vector<V> minkowski_difference(const std::vector<V>& f, const std::vector<V
   return hull(std::move(sum));  // drops collinear points, fixes the start: few points, cheap
 }
 
-/// Signed distance from x to the convex hull q (counter-clockwise; 1 or 2 points allowed).
-double signed_distance(const std::vector<V>& q, const V& x) {
+/// Signed distance from x to the convex hull q (counter-clockwise; 1 or 2 points allowed), whose
+/// edge i (q[i] -> q[i + 1]) has the outward unit normal normals[i] (3 points or more).
+double signed_distance(const std::vector<V>& q, const std::vector<V>& normals, const V& x) {
   const auto to_segment = [&](const V& a, const V& b) {
     const V d = b - a;
     const double t = std::clamp((x - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
@@ -88,11 +89,7 @@ double signed_distance(const std::vector<V>& q, const V& x) {
   if (q.size() == 1) return (x - q[0]).norm();
   if (q.size() == 2) return to_segment(q[0], q[1]);
   double inside = -std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < q.size(); ++i) {
-    const V& a = q[i];
-    const V& b = q[(i + 1) % q.size()];
-    inside = std::max(inside, outward(b - a).dot(x - a));
-  }
+  for (std::size_t i = 0; i < q.size(); ++i) inside = std::max(inside, normals[i].dot(x - q[i]));
   if (inside <= 0) return inside;
   double d = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < q.size(); ++i) d = std::min(d, to_segment(q[i], q[(i + 1) % q.size()]));
@@ -103,6 +100,7 @@ double signed_distance(const std::vector<V>& q, const V& x) {
 struct Locus {
   enum Kind { Rounded, Line, Circle } kind = Rounded;
   std::vector<V> q;       ///< Rounded: Minkowski core, counter-clockwise
+  std::vector<V> normals; ///< Rounded, 2 core points or more: outward unit normal of edge q[i] -> q[i + 1] (bound())
   double rho = 0;         ///< Rounded: thickening; Circle: radius
   V n = V::Zero();        ///< Line: unit normal, gap = n.x - h
   double h = 0;
@@ -113,7 +111,7 @@ struct Locus {
 
   double gap(const V& x) const {
     switch (kind) {
-      case Rounded: return signed_distance(q, x) - rho;
+      case Rounded: return signed_distance(q, normals, x) - rho;
       case Line: return n.dot(x) - h;
       case Circle: return rho - (x - c).norm();
     }
@@ -145,8 +143,7 @@ void add_prims(const Locus& L, std::vector<Prim>& out) {
     return;
   }
   const std::size_t m = L.q.size();
-  std::vector<V> normal(m);
-  for (std::size_t i = 0; i < m; ++i) normal[i] = outward(L.q[(i + 1) % m] - L.q[i]);
+  const std::vector<V>& normal = L.normals;
   for (std::size_t i = 0; i < m; ++i) {
     Prim s;
     s.kind = Prim::Seg, s.a = L.q[i] + L.rho * normal[i], s.b = L.q[(i + 1) % m] + L.rho * normal[i];
@@ -253,13 +250,18 @@ std::vector<RoundedCore<2>> cores_of(const Shape<2>* shape, const Mat<2>& rotati
   return cores;
 }
 
-/// Bounding circle of a rounded locus or circle.
+/// Bounding circle of a rounded locus or circle, and a rounded locus's edge normals (computed once:
+/// every gap evaluation needs them).
 void bound(Locus& L) {
   if (L.kind == Locus::Line) return;
   if (L.kind == Locus::Circle) {
     L.centre = L.c, L.reach = L.rho;
     return;
   }
+  const std::size_t m = L.q.size();
+  L.normals.clear();
+  if (m >= 2)  // a segment's two sides too (add_prims)
+    for (std::size_t i = 0; i < m; ++i) L.normals.push_back(outward(L.q[(i + 1) % m] - L.q[i]));
   V c = V::Zero();
   for (const V& p : L.q) c += p;
   c /= static_cast<double>(L.q.size());
