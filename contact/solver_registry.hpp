@@ -7,9 +7,9 @@
 // In 2D the polygon wrapper covers disks, stadiums, polygons, clusters and walls; in 3D the gap
 // Newton solver capsules, spheres and smooth walls, the polytope wrapper polyhedra and plane
 // walls; the ellipsoid solver, registered after them, takes ellipsoids (ellipses), spheres and
-// plane walls; the ball wrapper spheres (disks) and clusters
-// with walls; the analytic sphere solver, registered last, spheres and walls alone. A 3D capsule
-// placed against a cluster or a cylinder still goes to minimisation.
+// plane walls; the ball wrapper spheres (disks) and clusters with walls; the analytic sphere
+// solver, registered last, spheres and walls alone. A 3D capsule placed against a cluster or a
+// cylinder still goes to minimisation.
 #include <array>
 #include <map>
 #include <memory>
