@@ -126,19 +126,34 @@ struct Prim {
   V a = V::Zero(), b = V::Zero(), c = V::Zero(), n0 = V::Zero(), n1 = V::Zero();
   double r = 0;
   bool full = false;
+  V lo = V::Constant(-std::numeric_limits<double>::infinity());  ///< bounding box (a line: the plane)
+  V hi = V::Constant(std::numeric_limits<double>::infinity());
+
+  void box() {
+    if (kind == Seg) lo = a.cwiseMin(b), hi = a.cwiseMax(b);
+    if (kind == Arc) lo = c.array() - r, hi = c.array() + r;
+  }
 };
+
+/// Can P and Q meet (boxes within `margin`)? Most pairs of a wrapper's boundary pieces cannot: a
+/// convex boundary crosses another at two points. The margin covers what intersect() accepts
+/// beyond the pieces: the segments' parameter slack (kEps of their length) and `flush`.
+bool boxes_meet(const Prim& P, const Prim& Q, double margin) {
+  return (P.lo.array() <= Q.hi.array() + margin).all() && (Q.lo.array() <= P.hi.array() + margin).all();
+}
 
 void add_prims(const Locus& L, std::vector<Prim>& out) {
   if (L.kind == Locus::Line) {
     Prim p;
     p.kind = Prim::Line, p.a = L.h * L.n, p.b = V(-L.n.y(), L.n.x());
-    out.push_back(p);
+    out.push_back(p);  // unbounded
     return;
   }
   if (L.kind == Locus::Circle || L.q.size() == 1) {
     if (!(L.rho > 0)) return;  // a point: no curve
     Prim p;
     p.kind = Prim::Arc, p.c = L.kind == Locus::Circle ? L.c : L.q[0], p.r = L.rho, p.full = true;
+    p.box();
     out.push_back(p);
     return;
   }
@@ -147,10 +162,12 @@ void add_prims(const Locus& L, std::vector<Prim>& out) {
   for (std::size_t i = 0; i < m; ++i) {
     Prim s;
     s.kind = Prim::Seg, s.a = L.q[i] + L.rho * normal[i], s.b = L.q[(i + 1) % m] + L.rho * normal[i];
+    s.box();
     out.push_back(s);
     if (L.rho > 0) {
       Prim a;
       a.kind = Prim::Arc, a.c = L.q[i], a.r = L.rho, a.n0 = normal[(i + m - 1) % m], a.n1 = normal[i];
+      a.box();
       out.push_back(a);
     }
   }
@@ -382,7 +399,11 @@ int PolygonWrapperSolver::solve(std::span<const Body<2>> fixed, const Mobile<2>&
       points.clear();
       const double flush = 0.5 * kContactTol * std::min(A.size, B.size);
       for (const Prim& P : prims0)
-        for (const Prim& Q : prims1) intersect(P, Q, flush, points);
+        for (const Prim& Q : prims1) {
+          const double extent = (P.hi - P.lo).cwiseAbs().sum() + (Q.hi - Q.lo).cwiseAbs().sum();  // inf for a line
+          if (std::isfinite(extent) && !boxes_meet(P, Q, flush + 1e-9 * extent)) continue;
+          intersect(P, Q, flush, points);
+        }
       for (const V& x : points) {
         bool duplicate = false;
         for (const V& y : found) duplicate = duplicate || (x - y).squaredNorm() <= 1e-18 * scale * scale;
