@@ -40,12 +40,14 @@ std::vector<V> hull(std::vector<V> p) {
 /// edges by angle (paper 004: the wrapper has as many edges as both together). Each vertex is
 /// computed as f_i - m_j, and the result is the one hull() would give for every difference: the
 /// same points, collinear ones dropped, starting from the lowest (x, y).
-/// Direction angle of d in [0, 2 pi).
-double edge_angle(const V& d) {
-  const double a = std::atan2(d.y(), d.x());
-  return a < 0 ? a + 2 * kPi : a;
+/// Whether direction a comes before b in angle, counting from 0 to 2 pi (the x axis first):
+/// exact (the half-plane, then the sign of the cross product), without trigonometry. Equal
+/// directions come before each other (both edges are taken at once).
+bool not_after(const V& a, const V& b) {
+  const auto upper = [](const V& d) { return d.y() > 0 || (d.y() == 0 && d.x() >= 0); };  // angle in [0, pi)
+  if (upper(a) != upper(b)) return upper(a);
+  return cross(a, b) >= 0;
 }
-constexpr double kNever = 10.0;  // beyond every angle: a polygon whose edges are all used
 
 std::vector<V> minkowski_difference(const std::vector<V>& f, const std::vector<V>& m) {
   const std::size_t nf = f.size(), nm = m.size();
@@ -68,10 +70,11 @@ std::vector<V> minkowski_difference(const std::vector<V>& f, const std::vector<V
     // The edge with the smaller direction angle goes first (angles grow from 0 to 2 pi from the
     // lowest vertex; a segment's two edges are antiparallel, which a cross product alone would
     // take for parallel).
-    const double af = i < nf && nf > 1 ? edge_angle(f[(a + 1) % nf] - f[a]) : kNever;
-    const double am = j < nm && nm > 1 ? edge_angle(m[b] - m[(b + 1) % nm]) : kNever;  // an edge of -m
-    const bool step_f = i < nf && (af <= am || nm == 1 || j >= nm);
-    const bool step_m = j < nm && (am <= af || nf == 1 || i >= nf);
+    const bool f_left = i < nf && nf > 1, m_left = j < nm && nm > 1;  // edges still to take
+    const V ef = f_left ? V(f[(a + 1) % nf] - f[a]) : V::Zero();
+    const V em = m_left ? V(m[b] - m[(b + 1) % nm]) : V::Zero();  // an edge of -m
+    const bool step_f = i < nf && (!m_left || (f_left && not_after(ef, em)) || nm == 1 || j >= nm);
+    const bool step_m = j < nm && (!f_left || (m_left && not_after(em, ef)) || nf == 1 || i >= nf);
     if (step_f) ++i;
     if (step_m) ++j;
   }
