@@ -123,9 +123,11 @@ struct Reader {
     if (!kind_json.is_string()) fail(where + ".kind", "expected a string");
     const std::string kind = kind_json.get<std::string>();
     if (kind == SphereShape<D>::kKind) return std::make_shared<SphereShape<D>>(positive(member(def, "radius", where), where + ".radius"));
-    if (kind == SpherocylinderShape<D>::kKind)
-      return std::make_shared<SpherocylinderShape<D>>(number(member(def, "segment_half_length", where), where + ".segment_half_length"),
-                                                      positive(member(def, "radius", where), where + ".radius"));
+    if (kind == SpherocylinderShape<D>::kKind) {
+      const double a = number(member(def, "segment_half_length", where), where + ".segment_half_length");
+      if (!(a >= 0)) fail(where + ".segment_half_length", "must not be negative");
+      return std::make_shared<SpherocylinderShape<D>>(a, positive(member(def, "radius", where), where + ".radius"));
+    }
     if (kind == EllipsoidShape<D>::kKind) {
       const Vec<D> axes = point<D>(member(def, "semi_axes", where), where + ".semi_axes");
       if (!(axes.array() > 0).all()) fail(where + ".semi_axes", "must be positive");

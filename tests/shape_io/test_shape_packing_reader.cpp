@@ -140,6 +140,9 @@ TEST(ShapePackingReader, BadInputNamesTheFileAndTheKey) {
   std::string unknown = shapes;
   unknown.replace(unknown.rfind("spherocylinder"), 14, "dodecahedron");
   expect_refused(file(unknown, good_particle), "unknown shape kind 'dodecahedron'");
+  std::string negative = shapes;
+  negative.replace(negative.find("0.5, \"radius\""), 3, "-0.5");
+  expect_refused(file(negative, good_particle), "segment_half_length: must not be negative");
   std::string no_radius = shapes;
   no_radius.replace(no_radius.find(", \"radius\": 0.5"), 15, "");
   expect_refused(file(no_radius, good_particle), "shapes[0].definition: missing key 'radius'");
