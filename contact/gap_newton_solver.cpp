@@ -3,15 +3,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 
 #include "contact/gap_newton.hpp"
-#include "contact/segment_distance.hpp"
+#include "contact/swept_ball.hpp"
 #include "shapes/sphere_shape.hpp"
-#include "shapes/spherocylinder_shape.hpp"
 
 namespace fp {
 
@@ -26,32 +24,6 @@ namespace {
 template <int D>
 void as_sphere(double r, Particle<D>& p) {
   if (!p.shape || p.shape->bounding_radius() != r) p.shape = std::make_shared<SphereShape<D>>(r);
-}
-
-/// A sphere or spherocylinder as a swept ball: the segment [from, from + along] thickened by
-/// `radius` (a sphere: along = 0), at a pose. False for other kinds.
-template <int D>
-struct Swept {
-  Vec<D> from = Vec<D>::Zero(), along = Vec<D>::Zero();
-  double radius = 0;
-};
-template <int D>
-bool swept_of(const Shape<D>& shape, const Mat<D>& rotation, const Vec<D>& position, Swept<D>& out) {
-  if (std::strcmp(shape.kind(), SpherocylinderShape<D>::kKind) == 0) {
-    const auto& c = static_cast<const SpherocylinderShape<D>&>(shape);
-    const Vec<D> half = c.half_length() * rotation.col(0);  // the narrow phase's segment ends
-    out.from = position - half;
-    out.along = (position + half) - out.from;
-    out.radius = c.radius();
-    return true;
-  }
-  if (std::strcmp(shape.kind(), SphereShape<D>::kKind) == 0) {
-    out.from = position;
-    out.along.setZero();
-    out.radius = shape.bounding_radius();
-    return true;
-  }
-  return false;
 }
 }  // namespace
 
@@ -94,29 +66,25 @@ int GapNewtonSolver<D>::solve(std::span<const Body<D>> fixed, const Mobile<D>& m
   // Eq. 6, segment distance) with the segments' directions prepared once for the ~30 gap
   // evaluations of a solve (measured: a third of the packing time of capsules went to recomputing
   // them and to the narrow phase's dispatch). Other bodies (walls): the narrow phase.
-  Swept<D> moving;
-  const bool mobile_swept = swept_of<D>(*mob.shape, mob.pose.rotation, Vec<D>::Zero(), moving);
-  std::array<Swept<D>, D> swept;
+  const std::optional<SweptBall<D>> moving = swept_ball<D>(*mob.shape, mob.pose.rotation, Vec<D>::Zero());
+  std::array<std::optional<SweptBall<D>>, D> swept;
   std::array<std::optional<SegmentPair<D>>, D> pair;
   for (int i = 0; i < D; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    if (mobile_swept && particle[k] && swept_of<D>(*particle[k]->shape, particle[k]->pose.rotation, particle[k]->pose.position, swept[k]))
-      pair[k].emplace(swept[k].along, moving.along);
+    if (!moving || !particle[k]) continue;
+    swept[k] = swept_ball<D>(*particle[k]->shape, particle[k]->pose.rotation, particle[k]->pose.position);
+    if (swept[k]) pair[k].emplace(swept[k]->along, moving->along);
   }
   const auto gaps = [&](const Vec<D>& x, std::array<Gap<D>, D>& g) {
     mob.pose.position = x;
     for (int i = 0; i < D; ++i) {
       const auto k = static_cast<std::size_t>(i);
       const Body<D>& b = fixed[k];
-      if (pair[k]) {
-        const SegmentClosest<D> c = pair[k]->closest(swept[k].from, x + moving.from);
-        const Vec<D> d = c.on_second - c.on_first;
-        const double n = d.norm();
-        const Vec<D> fallback = x - particle[k]->pose.position;  // the narrow phase's: centre to centre
-        g[k] = {n - swept[k].radius - moving.radius, n > 0 ? Vec<D>(d / n) : fallback.normalized()};
-      } else {
+      if (pair[k])
+        g[k] = swept_ball_gap<D>(pair[k]->closest(swept[k]->from, x + moving->from), swept[k]->radius, moving->radius,
+                                 x - particle[k]->pose.position);
+      else
         g[k] = b.is_wall() ? np_.gap(*b.wall, mob) : np_.gap(*particle[k], mob);
-      }
     }
   };
   const auto within = [&](const std::array<Gap<D>, D>& g, double slack) {

@@ -11,6 +11,7 @@
 
 #include "contact/ellipsoid_gap.hpp"
 #include "contact/segment_distance.hpp"
+#include "contact/swept_ball.hpp"
 #include "shapes/ellipsoid_shape.hpp"
 #include "shapes/cluster_shape.hpp"
 #include "shapes/convex_polytope_shape.hpp"
@@ -33,18 +34,6 @@ struct NarrowPhase<D>::FclShape {
 
 namespace {
 
-/// Unit vector along v, or along `fallback` when v is (numerically) zero.
-template <int D>
-Vec<D> unit_or(const Vec<D>& v, const Vec<D>& fallback) {
-  const double n = v.norm();
-  if (n > 0) return v / n;
-  const double m = fallback.norm();
-  if (m > 0) return fallback / m;
-  Vec<D> e = Vec<D>::Zero();
-  e[0] = 1;
-  return e;
-}
-
 /// Gap of two balls, gradient for the second.
 template <int D>
 Gap<D> ball_gap(const Vec<D>& ca, double ra, const Vec<D>& cb, double rb) {
@@ -53,24 +42,15 @@ Gap<D> ball_gap(const Vec<D>& ca, double ra, const Vec<D>& cb, double rb) {
   return {n - ra - rb, unit_or<D>(d, Vec<D>::UnitX())};
 }
 
-/// World segment of a spherocylinder particle.
+/// Gap of two swept balls (paper 004 Eq. 6 in distance form), gradient for the second.
 template <int D>
-std::pair<Vec<D>, Vec<D>> segment_of(const Particle<D>& p) {
-  // The ends are -+a e_x in the body frame: to_world() of them, without the product by the zeros
-  // (the same bits, at a third of the cost of the hottest function of a capsule packing).
-  const auto& s = static_cast<const SpherocylinderShape<D>&>(*p.shape);
-  const Vec<D> half = s.half_length() * p.pose.rotation.col(0);
-  return {p.pose.position - half, p.pose.position + half};
+Gap<D> swept_gap(const SweptBall<D>& a, const SweptBall<D>& b, const Vec<D>& ca, const Vec<D>& cb) {
+  return swept_ball_gap<D>(SegmentPair<D>(a.along, b.along).closest(a.from, b.from), a.radius, b.radius, cb - ca);
 }
 
-/// Gap of two swept balls (segment + radius; a point segment is a ball): paper 004 Eq. 6 in
-/// distance form, d1(s1, s2) - (r1 + r2).
 template <int D>
-Gap<D> swept_gap(const Vec<D>& a0, const Vec<D>& a1, double ra, const Vec<D>& b0, const Vec<D>& b1, double rb,
-                 const Vec<D>& ca, const Vec<D>& cb) {
-  const SegmentClosest<D> c = closest_points_on_segments<D>(a0, a1, b0, b1);
-  const Vec<D> d = c.on_second - c.on_first;
-  return {d.norm() - ra - rb, unit_or<D>(d, cb - ca)};
+SweptBall<D> swept_of(const Particle<D>& p) {
+  return *swept_ball<D>(*p.shape, p.pose.rotation, p.pose.position);
 }
 
 template <int D>
@@ -80,47 +60,24 @@ Gap<D> sphere_sphere(const Particle<D>& a, const Particle<D>& b) {
 
 template <int D>
 Gap<D> capsule_capsule(const Particle<D>& a, const Particle<D>& b) {
-  const auto [a0, a1] = segment_of(a);
-  const auto [b0, b1] = segment_of(b);
-  const double ra = static_cast<const SpherocylinderShape<D>&>(*a.shape).radius();
-  const double rb = static_cast<const SpherocylinderShape<D>&>(*b.shape).radius();
-  return swept_gap<D>(a0, a1, ra, b0, b1, rb, a.pose.position, b.pose.position);
+  return swept_gap<D>(swept_of(a), swept_of(b), a.pose.position, b.pose.position);
 }
 
 template <int D>
 Gap<D> sphere_capsule(const Particle<D>& a, const Particle<D>& b) {
-  const auto [b0, b1] = segment_of(b);
-  const double rb = static_cast<const SpherocylinderShape<D>&>(*b.shape).radius();
-  const Vec<D>& c = a.pose.position;
-  return swept_gap<D>(c, c, a.bounding_radius(), b0, b1, rb, c, b.pose.position);
+  return swept_gap<D>(swept_of(a), swept_of(b), a.pose.position, b.pose.position);
 }
 
 /// Shapes made of balls (clusters, spheres): the least gap over member pairs. A capsule member
 /// list is its segment (handled as swept balls).
 template <int D>
-struct SweptPieces {
-  std::vector<Vec<D>> from, to;
-  std::vector<double> radius;
-};
-
-template <int D>
-void pieces_of(const Particle<D>& p, SweptPieces<D>& s) {
-  s.from.clear();
-  s.to.clear();
-  s.radius.clear();
+void pieces_of(const Particle<D>& p, std::vector<SweptBall<D>>& s) {
+  s.clear();
   if (std::strcmp(p.shape->kind(), SpherocylinderShape<D>::kKind) == 0) {
-    const auto [e0, e1] = segment_of(p);
-    s.from.push_back(e0);
-    s.to.push_back(e1);
-    s.radius.push_back(static_cast<const SpherocylinderShape<D>&>(*p.shape).radius());
+    s.push_back(swept_of(p));
     return;
   }
-  auto add = [&](const Ball<D>& b) {
-    const Vec<D> c = p.pose.to_world(b.center);
-    s.from.push_back(c);
-    s.to.push_back(c);
-    s.radius.push_back(b.radius);
-  };
+  auto add = [&](const Ball<D>& b) { s.push_back({p.pose.to_world(b.center), Vec<D>::Zero(), b.radius}); };
   if (std::strcmp(p.shape->kind(), ClusterShape<D>::kKind) == 0) {  // its members, without a copy
     for (const Ball<D>& b : static_cast<const ClusterShape<D>&>(*p.shape).members()) add(b);
     return;
@@ -131,14 +88,13 @@ void pieces_of(const Particle<D>& p, SweptPieces<D>& s) {
 template <int D>
 Gap<D> ball_union_gap(const Particle<D>& a, const Particle<D>& b) {
   // Reused buffers: a cluster pair's gap is a few microseconds, its allocations were a third of it.
-  thread_local SweptPieces<D> pa, pb;
+  thread_local std::vector<SweptBall<D>> pa, pb;
   pieces_of(a, pa);
   pieces_of(b, pb);
   Gap<D> best{std::numeric_limits<double>::infinity(), Vec<D>::Zero()};
-  for (std::size_t i = 0; i < pa.radius.size(); ++i)
-    for (std::size_t j = 0; j < pb.radius.size(); ++j) {
-      const Gap<D> g = swept_gap<D>(pa.from[i], pa.to[i], pa.radius[i], pb.from[j], pb.to[j], pb.radius[j],
-                                    a.pose.position, b.pose.position);
+  for (const SweptBall<D>& u : pa)
+    for (const SweptBall<D>& v : pb) {
+      const Gap<D> g = swept_gap<D>(u, v, a.pose.position, b.pose.position);
       if (g.value < best.value) best = g;
     }
   return best;

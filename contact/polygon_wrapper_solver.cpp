@@ -131,10 +131,12 @@ struct Prim {
   bool full = false;
   V lo = V::Constant(-std::numeric_limits<double>::infinity());  ///< bounding box (a line: the plane)
   V hi = V::Constant(std::numeric_limits<double>::infinity());
+  double extent = std::numeric_limits<double>::infinity();      ///< the box's width plus height
 
   void box() {
     if (kind == Seg) lo = a.cwiseMin(b), hi = a.cwiseMax(b);
     if (kind == Arc) lo = c.array() - r, hi = c.array() + r;
+    extent = (hi - lo).sum();
   }
 };
 
@@ -403,7 +405,7 @@ int PolygonWrapperSolver::solve(std::span<const Body<2>> fixed, const Mobile<2>&
       const double flush = 0.5 * kContactTol * std::min(A.size, B.size);
       for (const Prim& P : prims0)
         for (const Prim& Q : prims1) {
-          const double extent = (P.hi - P.lo).cwiseAbs().sum() + (Q.hi - Q.lo).cwiseAbs().sum();  // inf for a line
+          const double extent = P.extent + Q.extent;  // inf for a line
           if (std::isfinite(extent) && !boxes_meet(P, Q, flush + 1e-9 * extent)) continue;
           intersect(P, Q, flush, points);
         }
