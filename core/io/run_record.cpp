@@ -114,10 +114,11 @@ Json parse_record(const std::string& text, const std::string& source_name, int& 
   return j;
 }
 
-/// The text of every number of particles.x, .y and .z (a DOM keeps only the rounded doubles).
-class ParticleTokens : public nlohmann::json_sax<Json> {
+/// The text of every number directly inside the arrays `select` picks (json_number_texts).
+class NumberTexts : public nlohmann::json_sax<Json> {
  public:
-  std::vector<std::string> axis[3];
+  NumberTexts(std::size_t slots, const JsonArraySelect& select) : texts(slots), select_(select) {}
+  std::vector<std::vector<std::string>> texts;
 
   bool null() override { return put("null"); }
   bool boolean(bool) override { return put("?"); }
@@ -126,46 +127,55 @@ class ParticleTokens : public nlohmann::json_sax<Json> {
   bool number_float(number_float_t, const string_t& s) override { return put(s); }
   bool string(string_t&) override { return put("?"); }
   bool binary(binary_t&) override { return put("?"); }
-  bool start_object(std::size_t) override {
-    keys_.push_back(pending_);
-    return true;
-  }
+  bool start_object(std::size_t) override { return open(false); }
   bool key(string_t& k) override {
     pending_ = k;
     return true;
   }
-  bool end_object() override {
-    keys_.pop_back();
-    return true;
-  }
-  bool start_array(std::size_t) override {
-    // particles.{x,y,z}: the array directly under the "particles" object of the top level.
-    in_array_ = -1;
-    if (keys_.size() == 2 && keys_[1] == "particles" && arrays_open_ == 0)
-      for (int k = 0; k < 3; ++k)
-        if (pending_ == "xyz"[k] + std::string()) in_array_ = k;
-    ++arrays_open_;
-    return true;
-  }
-  bool end_array() override {
-    --arrays_open_;
-    in_array_ = -1;
-    return true;
-  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(true); }
+  bool end_array() override { return close(); }
   bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
 
  private:
-  bool put(const std::string& s) {
-    if (in_array_ >= 0 && arrays_open_ == 1) axis[in_array_].push_back(s);
+  bool open(bool array) {
+    const std::string under = !kinds_.empty() && kinds_.back() == 'a' ? "[]" : pending_;
+    int slot = -1;
+    if (array && !kinds_.empty()) {  // its path: the keys below the top level, and its own
+      std::vector<std::string> path(under_.begin() + 1, under_.end());
+      path.push_back(under);
+      slot = select_(path);
+      if (slot >= static_cast<int>(texts.size())) slot = -1;
+    }
+    kinds_.push_back(array ? 'a' : 'o');
+    under_.push_back(under);
+    slots_.push_back(slot);
     return true;
   }
-  std::vector<std::string> keys_;
-  std::string pending_;
-  int in_array_ = -1;
-  int arrays_open_ = 0;
+  bool close() {
+    kinds_.pop_back();
+    under_.pop_back();
+    slots_.pop_back();
+    return true;
+  }
+  bool put(const std::string& s) {
+    if (!slots_.empty() && slots_.back() >= 0) texts[static_cast<std::size_t>(slots_.back())].push_back(s);
+    return true;
+  }
+  const JsonArraySelect& select_;
+  std::string kinds_;               // the containers open, outermost first: 'o' object, 'a' array
+  std::vector<std::string> under_;  // per open container: the key it is the value of ("[]": an item)
+  std::vector<int> slots_;          // per open container: its slot, -1 if not picked
+  std::string pending_;             // the last key read
 };
 
 }  // namespace
+
+std::vector<std::vector<std::string>> json_number_texts(const std::string& text, std::size_t slots, const JsonArraySelect& select) {
+  NumberTexts tokens(slots, select);
+  Json::sax_parse(text, &tokens);
+  return std::move(tokens.texts);
+}
 
 int run_record_dimension(const std::string& text, const std::string& source_name) {
   int dimension = 0;
@@ -206,14 +216,16 @@ Packing<D> packing_from_json(const std::string& text, const std::string& source_
   }
   // Far from the origin the doubles of the DOM lost digits: subtract the origin from the text.
   if (!origin.isZero()) {
-    ParticleTokens tokens;
-    Json::sax_parse(text, &tokens);
+    const auto tokens = json_number_texts(text, 3, [](const std::vector<std::string>& path) {  // particles.{x,y,z}
+      if (path.size() != 2 || path[0] != "particles") return -1;
+      return path[1] == "x" ? 0 : path[1] == "y" ? 1 : path[1] == "z" ? 2 : -1;
+    });
     for (int k = 0; k < D; ++k) {
       if (origin[k] == 0.0) continue;
       const OffsetAxis axis(origin[k]);
-      if (tokens.axis[k].size() != cols[k].size()) throw fail(std::string("cannot re-read particles.") + names[k]);
+      if (tokens[k].size() != cols[k].size()) throw fail(std::string("cannot re-read particles.") + names[k]);
       for (std::size_t i = 0; i < cols[k].size(); ++i) {
-        const auto v = axis.local_from_text(tokens.axis[k][i]);
+        const auto v = axis.local_from_text(tokens[k][i]);
         if (!v) throw fail(std::string("particles.") + names[k] + "[" + std::to_string(i) + "] is not a number");
         cols[k][i] = *v;
       }

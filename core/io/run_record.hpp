@@ -12,6 +12,7 @@
 // infinities become null (JSON has no spelling for them). Particle coordinates are absolute,
 // written as the exact decimal of frame_origin + local (core/io/exact_decimal.hpp).
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -66,6 +67,15 @@ Packing<D> packing_from_json(const std::string& text, const std::string& source_
 
 /// The "dimension" of a run record or json output. Throws like packing_from_json.
 int run_record_dimension(const std::string& text, const std::string& source_name);
+
+/// Picks arrays of a JSON text by their path from the top level (the keys, "[]" for an item of an
+/// array): a slot index, or -1.
+using JsonArraySelect = std::function<int(const std::vector<std::string>& path)>;
+
+/// The text of every number directly inside the arrays `select` picks, per slot (`slots` of
+/// them), in the order of the text: a DOM keeps only the rounded doubles, and the readers subtract
+/// a far frame's origin from the text itself (core/io/exact_decimal.hpp).
+std::vector<std::vector<std::string>> json_number_texts(const std::string& text, std::size_t slots, const JsonArraySelect& select);
 
 /// A JSON parser's message without nlohmann's "[json.exception.parse_error.101] " prefix (an
 /// internal id): what a user is shown.

@@ -25,56 +25,6 @@ namespace {
 
 using Json = nlohmann::json;
 
-/// The text of every number of particles[i].position (a DOM keeps only the rounded doubles).
-class PositionTokens : public nlohmann::json_sax<Json> {
- public:
-  std::vector<std::string> numbers;
-
-  bool null() override { return put("null"); }
-  bool boolean(bool) override { return put("?"); }
-  bool number_integer(number_integer_t v) override { return put(std::to_string(v)); }
-  bool number_unsigned(number_unsigned_t v) override { return put(std::to_string(v)); }
-  bool number_float(number_float_t, const string_t& s) override { return put(s); }
-  bool string(string_t&) override { return put("?"); }
-  bool binary(binary_t&) override { return put("?"); }
-  bool start_object(std::size_t) override { return open('o'); }
-  bool key(string_t& k) override {
-    pending_ = k;
-    return true;
-  }
-  bool end_object() override { return close(); }
-  bool start_array(std::size_t) override {
-    // top object > "particles" array > a particle object > its "position" array
-    collecting_ = open_ == "oao" && under_[1] == "particles" && pending_ == "position";
-    return open('a');
-  }
-  bool end_array() override {
-    collecting_ = false;
-    return close();
-  }
-  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
-
- private:
-  bool put(const std::string& s) {
-    if (collecting_) numbers.push_back(s);
-    return true;
-  }
-  bool open(char kind) {
-    under_.push_back(!open_.empty() && open_.back() == 'a' ? "[]" : pending_);
-    open_.push_back(kind);
-    return true;
-  }
-  bool close() {
-    open_.pop_back();
-    under_.pop_back();
-    return true;
-  }
-  std::string open_;                // the containers open, outermost first: 'o' object, 'a' array
-  std::vector<std::string> under_;  // per open container: the key it is the value of ("[]": an item)
-  std::string pending_;             // the last key read
-  bool collecting_ = false;
-};
-
 struct Reader {
   const std::string& source;
 
@@ -219,10 +169,10 @@ ShapePacking<D> read_shape_packing_json(const std::string& text, const std::stri
   const Json& particles = r.list(r.member(j, "particles", "top level"), "particles");
   std::vector<std::string> position_text;
   if (!origin.isZero()) {  // far from the origin a double lost digits: subtract it from the text
-    PositionTokens tokens;
-    Json::sax_parse(text, &tokens);
-    if (tokens.numbers.size() != 3 * particles.size()) r.fail("particles", "cannot re-read the positions");
-    position_text = std::move(tokens.numbers);
+    position_text = std::move(json_number_texts(text, 1, [](const std::vector<std::string>& path) {
+      return path == std::vector<std::string>{"particles", "[]", "position"} ? 0 : -1;
+    })[0]);
+    if (position_text.size() != 3 * particles.size()) r.fail("particles", "cannot re-read the positions");
   }
   const auto axes = offset_axes(origin.data(), D);
   out.particles.reserve(particles.size());
