@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 namespace fp {
@@ -12,16 +14,24 @@ namespace {
 using V = Vec2;
 
 double cross(const V& a, const V& b) { return a.x() * b.y() - a.y() * b.x(); }
+/// Whether direction d has its angle in [0, pi).
+bool upper(const V& d) { return d.y() > 0 || (d.y() == 0 && d.x() >= 0); }
 /// Outward unit normal of the edge along d of a counter-clockwise polygon.
 V outward(const V& d) { return V(d.y(), -d.x()).normalized(); }
 
-/// Counter-clockwise convex hull (Andrew's monotone chain) without collinear points: 1 or 2
-/// points when the points span no area.
-std::vector<V> hull(std::vector<V> p) {
+/// Appends to `out` the counter-clockwise convex hull of p (Andrew's monotone chain) without
+/// collinear points: 1 or 2 points when the points span no area. p is sorted and deduplicated in
+/// place (callers pass scratch: a solve builds hundreds of hulls and allocates none).
+void append_hull(std::vector<V>& p, std::vector<V>& out) {
   std::sort(p.begin(), p.end(), [](const V& a, const V& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
   p.erase(std::unique(p.begin(), p.end()), p.end());
-  if (p.size() <= 2) return p;
-  std::vector<V> h(2 * p.size());
+  if (p.size() <= 2) {
+    out.insert(out.end(), p.begin(), p.end());
+    return;
+  }
+  const std::size_t start = out.size();
+  out.resize(start + 2 * p.size());
+  V* h = out.data() + start;
   std::size_t k = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     while (k >= 2 && cross(h[k - 1] - h[k - 2], p[i] - h[k - 2]) <= 0) --k;
@@ -31,28 +41,79 @@ std::vector<V> hull(std::vector<V> p) {
     while (k >= lower && cross(h[k - 1] - h[k - 2], p[i] - h[k - 2]) <= 0) --k;
     h[k++] = p[i];
   }
-  h.resize(k - 1);
+  out.resize(start + k - 1);
+}
+
+/// Whether p (3 points or more) is a strictly convex polygon counter-clockwise: every turn to the
+/// left, the edges winding once. Such a polygon (a polygon particle's vertices, turned and moved)
+/// is its own hull.
+bool strictly_convex_ccw(std::span<const V> p) {
+  const std::size_t n = p.size();
+  if (n < 3) return false;
+  int windings = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const V& a = p[i];
+    const V& b = p[(i + 1) % n];
+    const V& c = p[(i + 2) % n];
+    if (!(cross(b - a, c - a) > 0)) return false;
+    if (!upper(b - a) && upper(c - b)) ++windings;
+  }
+  return windings == 1;
+}
+
+/// Appends to `out` what append_hull() gives for the points of `cycle`, a convex polygon
+/// counter-clockwise from any vertex, possibly with repeated or collinear points (a Minkowski
+/// sum's merge), in linear time: from the lowest (x, y), each point kept while it turns left
+/// (the monotone chain's test on the same triples), the start closing the cycle. Returns false
+/// (nothing appended) when fewer than 3 points remain: degenerate, for append_hull().
+bool append_convex_cycle(std::span<const V> cycle, std::vector<V>& out) {
+  const std::size_t n = cycle.size();
+  std::size_t s = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (cycle[i].x() < cycle[s].x() || (cycle[i].x() == cycle[s].x() && cycle[i].y() < cycle[s].y())) s = i;
+  const std::size_t start = out.size();
+  out.resize(start + n + 1);
+  V* h = out.data() + start;
+  std::size_t k = 0;
+  for (std::size_t t = 0; t <= n; ++t) {
+    const V& p = cycle[(s + t) % n];
+    if (k >= 1 && p == h[k - 1]) continue;
+    while (k >= 2 && cross(h[k - 1] - h[k - 2], p - h[k - 2]) <= 0) --k;
+    h[k++] = p;
+  }
+  if (k < 4 || h[k - 1] != h[0]) {  // the start must close the cycle, with 3 points or more before it
+    out.resize(start);
+    return false;
+  }
+  out.resize(start + k - 1);
+  return true;
+}
+
+/// The hull of p as a new vector (for what is built once per mobile).
+std::vector<V> hull(std::vector<V> p) {
+  std::vector<V> h;
+  append_hull(p, h);
   return h;
 }
 
-/// The Minkowski sum f (+) (-m) of two convex polygons given counter-clockwise without collinear
-/// points (hull() output: 1 or 2 points for a point or a segment), by the O(n + m) merge of their
-/// edges by angle (paper 004: the wrapper has as many edges as both together). Each vertex is
-/// computed as f_i - m_j, and the result is the one hull() would give for every difference: the
-/// same points, collinear ones dropped, starting from the lowest (x, y).
 /// Whether direction a comes before b in angle, counting from 0 to 2 pi (the x axis first):
 /// exact (the half-plane, then the sign of the cross product), without trigonometry. Equal
 /// directions come before each other (both edges are taken at once).
 bool not_after(const V& a, const V& b) {
-  const auto upper = [](const V& d) { return d.y() > 0 || (d.y() == 0 && d.x() >= 0); };  // angle in [0, pi)
   if (upper(a) != upper(b)) return upper(a);
   return cross(a, b) >= 0;
 }
 
-std::vector<V> minkowski_difference(const std::vector<V>& f, const std::vector<V>& m) {
+/// Appends to `out` the Minkowski sum f (+) (-m) of two convex polygons given counter-clockwise
+/// without collinear points (append_hull() output: 1 or 2 points for a point or a segment), by the
+/// O(n + m) merge of their edges by angle (paper 004: the wrapper has as many edges as both
+/// together). Each vertex is computed as f_i - m_j, and the result is the one append_hull() would
+/// give for every difference: the same points, collinear ones dropped, starting from the lowest
+/// (x, y). `sum` is scratch.
+void append_minkowski_difference(std::span<const V> f, std::span<const V> m, std::vector<V>& sum, std::vector<V>& out) {
   const std::size_t nf = f.size(), nm = m.size();
   // -m is counter-clockwise too (a point reflection is a rotation by 180 degrees).
-  auto lowest = [](const std::vector<V>& p, double sign) {
+  auto lowest = [](std::span<const V> p, double sign) {
     std::size_t k = 0;
     for (std::size_t i = 1; i < p.size(); ++i) {
       const V a = sign * p[i], b = sign * p[k];
@@ -61,8 +122,7 @@ std::vector<V> minkowski_difference(const std::vector<V>& f, const std::vector<V
     return k;
   };
   const std::size_t i0 = lowest(f, 1), j0 = lowest(m, -1);
-  std::vector<V> sum;
-  sum.reserve(nf + nm);
+  sum.clear();
   std::size_t i = 0, j = 0;
   while (i < nf || j < nm) {
     const std::size_t a = (i0 + i) % nf, b = (j0 + j) % nm;
@@ -78,12 +138,13 @@ std::vector<V> minkowski_difference(const std::vector<V>& f, const std::vector<V
     if (step_f) ++i;
     if (step_m) ++j;
   }
-  return hull(std::move(sum));  // drops collinear points, fixes the start: few points, cheap
+  // Drops collinear points and fixes the start: in one pass for polygons, by sorting otherwise.
+  if (nf < 3 || nm < 3 || !append_convex_cycle(sum, out)) append_hull(sum, out);
 }
 
 /// Signed distance from x to the convex hull q (counter-clockwise; 1 or 2 points allowed), whose
 /// edge i (q[i] -> q[i + 1]) has the outward unit normal normals[i] (3 points or more).
-double signed_distance(const std::vector<V>& q, const std::vector<V>& normals, const V& x) {
+double signed_distance(std::span<const V> q, std::span<const V> normals, const V& x) {
   const auto to_segment = [&](const V& a, const V& b) {
     const V d = b - a;
     const double t = std::clamp((x - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
@@ -99,11 +160,11 @@ double signed_distance(const std::vector<V>& q, const std::vector<V>& normals, c
   return d;
 }
 
-/// A wrapper (locus of the mobile's reference point), in the frame centred on s0.
+/// A wrapper (locus of the mobile's reference point), in the frame centred on s0. Its core points
+/// and edge normals live in its set's shared arrays (Loci).
 struct Locus {
   enum Kind { Rounded, Line, Circle } kind = Rounded;
-  std::vector<V> q;       ///< Rounded: Minkowski core, counter-clockwise
-  std::vector<V> normals; ///< Rounded, 2 core points or more: outward unit normal of edge q[i] -> q[i + 1] (bound())
+  std::uint32_t first = 0, count = 0;  ///< Rounded: Minkowski core, counter-clockwise: Loci::points[first, first + count)
   double rho = 0;         ///< Rounded: thickening; Circle: radius
   V n = V::Zero();        ///< Line: unit normal, gap = n.x - h
   double h = 0;
@@ -111,14 +172,35 @@ struct Locus {
   V centre = V::Zero();   ///< bounding circle (Rounded, Circle)
   double reach = 0;
   double size = 1;        ///< tolerance size
+};
 
-  double gap(const V& x) const {
-    switch (kind) {
-      case Rounded: return signed_distance(q, normals, x) - rho;
-      case Line: return n.dot(x) - h;
-      case Circle: return rho - (x - c).norm();
+/// The wrappers of one body, stored flat: rebuilt for every neighbour without allocating.
+struct Loci {
+  std::vector<Locus> list;
+  std::vector<V> points;   ///< the rounded wrappers' core points
+  std::vector<V> normals;  ///< parallel to points, for cores of 2 points or more: outward unit normal of edge i -> i + 1 (bound())
+
+  void clear() { list.clear(), points.clear(), normals.clear(); }
+  std::span<const V> q(const Locus& L) const { return {points.data() + L.first, L.count}; }
+  std::span<const V> normals_of(const Locus& L) const { return {normals.data() + L.first, L.count}; }
+  /// Starts a rounded wrapper whose core points the caller appends to `points`.
+  Locus& open_rounded() {
+    Locus& L = list.emplace_back();
+    L.first = static_cast<std::uint32_t>(points.size());
+    return L;
+  }
+  double gap(const Locus& L, const V& x) const {
+    switch (L.kind) {
+      case Locus::Rounded: return signed_distance(q(L), normals_of(L), x) - L.rho;
+      case Locus::Line: return L.n.dot(x) - L.h;
+      case Locus::Circle: return L.rho - (x - L.c).norm();
     }
     return 0;
+  }
+  double least_gap(const V& x) const {
+    double g = std::numeric_limits<double>::infinity();
+    for (const Locus& L : list) g = std::min(g, gap(L, x));
+    return g;
   }
 };
 
@@ -147,31 +229,32 @@ bool boxes_meet(const Prim& P, const Prim& Q, double margin) {
   return (P.lo.array() <= Q.hi.array() + margin).all() && (Q.lo.array() <= P.hi.array() + margin).all();
 }
 
-void add_prims(const Locus& L, std::vector<Prim>& out) {
+void add_prims(const Loci& set, const Locus& L, std::vector<Prim>& out) {
   if (L.kind == Locus::Line) {
     Prim p;
     p.kind = Prim::Line, p.a = L.h * L.n, p.b = V(-L.n.y(), L.n.x());
     out.push_back(p);  // unbounded
     return;
   }
-  if (L.kind == Locus::Circle || L.q.size() == 1) {
+  const std::span<const V> q = set.q(L);
+  if (L.kind == Locus::Circle || q.size() == 1) {
     if (!(L.rho > 0)) return;  // a point: no curve
     Prim p;
-    p.kind = Prim::Arc, p.c = L.kind == Locus::Circle ? L.c : L.q[0], p.r = L.rho, p.full = true;
+    p.kind = Prim::Arc, p.c = L.kind == Locus::Circle ? L.c : q[0], p.r = L.rho, p.full = true;
     p.box();
     out.push_back(p);
     return;
   }
-  const std::size_t m = L.q.size();
-  const std::vector<V>& normal = L.normals;
+  const std::size_t m = q.size();
+  const std::span<const V> normal = set.normals_of(L);
   for (std::size_t i = 0; i < m; ++i) {
     Prim s;
-    s.kind = Prim::Seg, s.a = L.q[i] + L.rho * normal[i], s.b = L.q[(i + 1) % m] + L.rho * normal[i];
+    s.kind = Prim::Seg, s.a = q[i] + L.rho * normal[i], s.b = q[(i + 1) % m] + L.rho * normal[i];
     s.box();
     out.push_back(s);
     if (L.rho > 0) {
       Prim a;
-      a.kind = Prim::Arc, a.c = L.q[i], a.r = L.rho, a.n0 = normal[(i + m - 1) % m], a.n1 = normal[i];
+      a.kind = Prim::Arc, a.c = q[i], a.r = L.rho, a.n0 = normal[(i + m - 1) % m], a.n1 = normal[i];
       a.box();
       out.push_back(a);
     }
@@ -272,52 +355,55 @@ std::vector<RoundedCore<2>> cores_of(const Shape<2>* shape, const Mat<2>& rotati
   return cores;
 }
 
-/// Bounding circle of a rounded locus or circle, and a rounded locus's edge normals (computed once:
-/// every gap evaluation needs them).
-void bound(Locus& L) {
-  if (L.kind == Locus::Line) return;
-  if (L.kind == Locus::Circle) {
-    L.centre = L.c, L.reach = L.rho;
-    return;
-  }
-  const std::size_t m = L.q.size();
-  L.normals.clear();
-  if (m >= 2)  // a segment's two sides too (add_prims)
-    for (std::size_t i = 0; i < m; ++i) L.normals.push_back(outward(L.q[(i + 1) % m] - L.q[i]));
+/// Closes the rounded wrapper last opened (its core points appended to set.points): its point
+/// count, edge normals (computed once: every gap evaluation needs them) and bounding circle.
+void close_rounded(Loci& set, Locus& L) {
+  L.count = static_cast<std::uint32_t>(set.points.size() - L.first);
+  const std::span<const V> q = set.q(L);
+  const std::size_t m = q.size();
+  for (std::size_t i = 0; i < m; ++i)  // a segment's two sides too (add_prims); none for a point
+    set.normals.push_back(m >= 2 ? outward(q[(i + 1) % m] - q[i]) : V::Zero());
   V c = V::Zero();
-  for (const V& p : L.q) c += p;
-  c /= static_cast<double>(L.q.size());
+  for (const V& p : q) c += p;
+  c /= static_cast<double>(m);
   double r = 0;
-  for (const V& p : L.q) r = std::max(r, (p - c).norm());
+  for (const V& p : q) r = std::max(r, (p - c).norm());
   L.centre = c, L.reach = r + L.rho;
 }
 
+/// The mobile's cores (offsets at its orientation) and their hulls, built once per mobile.
+struct MobileCores {
+  std::vector<RoundedCore<2>> cores;
+  std::vector<std::vector<V>> hulls;
+};
+
 /// The wrappers of one fixed body for the mobile cores (frame centred on `o`).
-void loci_of(const Body<2>& b, const V& o, const std::vector<RoundedCore<2>>& mobile, double mobile_radius,
-             std::vector<Locus>& out) {
+void loci_of(const Body<2>& b, const V& o, const MobileCores& mobile, double mobile_radius, Loci& out) {
   out.clear();
+  thread_local std::vector<V> scratch, core_hull, sum;
   if (b.is_wall()) {
     const Wall<2>& w = *b.wall;
-    for (const RoundedCore<2>& M : mobile) {
+    for (const RoundedCore<2>& M : mobile.cores) {
       if (w.kind == WallKind::Plane) {
-        Locus L;
+        Locus& L = out.list.emplace_back();
         L.kind = Locus::Line, L.n = w.normal, L.size = mobile_radius;
         double lowest = std::numeric_limits<double>::infinity();
         for (const V& p : M.points) lowest = std::min(lowest, w.normal.dot(p));
         L.h = w.normal.dot(w.point - o) + M.radius - lowest;
-        out.push_back(L);
       } else if (w.kind == WallKind::Sphere) {
         for (const V& p : M.points) {
           Locus L;
           L.kind = Locus::Circle, L.c = w.point - o - p, L.rho = w.radius - M.radius, L.size = mobile_radius;
-          if (L.rho > 0) bound(L), out.push_back(L);
+          L.centre = L.c, L.reach = L.rho;
+          if (L.rho > 0) out.list.push_back(L);
         }
       } else if (w.kind == WallKind::Vertex) {
-        std::vector<V> diff;
-        for (const V& p : M.points) diff.push_back(w.point - o - p);
-        Locus L;
-        L.q = hull(std::move(diff)), L.rho = M.radius, L.size = mobile_radius;
-        bound(L), out.push_back(L);
+        scratch.clear();
+        for (const V& p : M.points) scratch.push_back(w.point - o - p);
+        Locus& L = out.open_rounded();
+        L.rho = M.radius, L.size = mobile_radius;
+        append_hull(scratch, out.points);
+        close_rounded(out, L);
       }
     }
     return;
@@ -325,23 +411,21 @@ void loci_of(const Body<2>& b, const V& o, const std::vector<RoundedCore<2>>& mo
   const Particle<2>* q = b.shaped;
   const auto fixed = cores_of(q ? q->shape.get() : nullptr, q ? q->pose.rotation : Mat<2>::Identity(), b.center - o, b.radius);
   const double size = std::min(b.radius, mobile_radius);
-  thread_local std::vector<std::vector<V>> mobile_hulls;
-  mobile_hulls.clear();
-  for (const RoundedCore<2>& M : mobile) mobile_hulls.push_back(hull(M.points));
   for (const RoundedCore<2>& F : fixed) {
-    const std::vector<V> f = hull(F.points);
-    for (std::size_t k = 0; k < mobile.size(); ++k) {
-      Locus L;
-      L.q = minkowski_difference(f, mobile_hulls[k]), L.rho = F.radius + mobile[k].radius, L.size = size;
-      bound(L), out.push_back(L);
+    core_hull.clear();
+    if (strictly_convex_ccw(F.points)) {
+      core_hull.assign(F.points.begin(), F.points.end());
+    } else {
+      scratch.assign(F.points.begin(), F.points.end());
+      append_hull(scratch, core_hull);
+    }
+    for (std::size_t k = 0; k < mobile.cores.size(); ++k) {
+      Locus& L = out.open_rounded();
+      L.rho = F.radius + mobile.cores[k].radius, L.size = size;
+      append_minkowski_difference(core_hull, mobile.hulls[k], sum, out.points);
+      close_rounded(out, L);
     }
   }
-}
-
-double least_gap(const std::vector<Locus>& loci, const V& x) {
-  double g = std::numeric_limits<double>::infinity();
-  for (const Locus& L : loci) g = std::min(g, L.gap(x));
-  return g;
 }
 
 bool may_meet(const Locus& a, const Locus& b) {
@@ -358,7 +442,7 @@ bool may_meet(const Locus& a, const Locus& b) {
 
 int PolygonWrapperSolver::solve(std::span<const Body<2>> fixed, const Mobile<2>& mobile, std::span<Placement<2>> out) const {
   if (fixed.size() != 2 || out.empty()) return 0;
-  thread_local std::vector<Locus> loci0, loci1;
+  thread_local Loci loci0, loci1;
   thread_local std::vector<Prim> prims0, prims1;
   thread_local std::vector<V> points, found;
   // Frame on the first particle (its reference point): offsets of 1e6 keep their digits.
@@ -371,18 +455,20 @@ int PolygonWrapperSolver::solve(std::span<const Body<2>> fixed, const Mobile<2>&
     const Shape<2>* shape = nullptr;
     Mat<2> rotation = Mat<2>::Identity();
     double radius = -1;
-    std::vector<RoundedCore<2>> cores;
+    MobileCores mobile;
     const Particle<2>* first = nullptr;  ///< whose wrappers loci0 holds (none: nullptr)
     V first_center = V::Zero();
     double first_radius = -1;
   } cache;
   if (cache.shape != mobile.shape.get() || cache.rotation != mobile.rotation || cache.radius != mobile.radius || !cache.shape) {
     cache.shape = mobile.shape.get(), cache.rotation = mobile.rotation, cache.radius = mobile.radius;
-    cache.cores = cores_of(mobile.shape.get(), mobile.rotation, V::Zero(), mobile.radius);
+    cache.mobile.cores = cores_of(mobile.shape.get(), mobile.rotation, V::Zero(), mobile.radius);
+    cache.mobile.hulls.clear();
+    for (const RoundedCore<2>& M : cache.mobile.cores) cache.mobile.hulls.push_back(hull(M.points));
     cache.first = nullptr;
   }
-  const std::vector<RoundedCore<2>>& mob = cache.cores;
-  if (mob.empty()) return 0;
+  const MobileCores& mob = cache.mobile;
+  if (mob.cores.empty()) return 0;
   const Body<2>& b0 = fixed[0];
   if (b0.is_wall() || !b0.shaped || cache.first != b0.shaped || cache.first_center != b0.center || cache.first_radius != b0.radius) {
     loci_of(b0, o, mob, mobile.radius, loci0);
@@ -390,31 +476,40 @@ int PolygonWrapperSolver::solve(std::span<const Body<2>> fixed, const Mobile<2>&
     cache.first_center = b0.center, cache.first_radius = b0.radius;
   }
   loci_of(fixed[1], o, mob, mobile.radius, loci1);
-  if (loci0.empty() || loci1.empty()) return 0;  // e.g. a disk wall too small for the mobile
+  if (loci0.list.empty() || loci1.list.empty()) return 0;  // e.g. a disk wall too small for the mobile
 
   found.clear();  // distinct: positions closer than 1e-9 of the sizes are one
   const double scale = mobile.radius + (fixed[0].is_wall() ? 0 : fixed[0].radius);
-  for (const Locus& A : loci0) {
+  for (const Locus& A : loci0.list) {
     prims0.clear();
-    add_prims(A, prims0);
-    for (const Locus& B : loci1) {
+    add_prims(loci0, A, prims0);
+    for (const Locus& B : loci1.list) {
       if (!may_meet(A, B)) continue;
       prims1.clear();
-      add_prims(B, prims1);
+      add_prims(loci1, B, prims1);
       points.clear();
       const double flush = 0.5 * kContactTol * std::min(A.size, B.size);
-      for (const Prim& P : prims0)
+      // The box of all B's pieces: a piece of A beyond it (by more than any pair's margin) meets
+      // none of them, which spares most of the piece pairs their box tests.
+      Prim all_b;
+      all_b.lo = V::Constant(std::numeric_limits<double>::infinity()), all_b.hi = -all_b.lo;
+      for (const Prim& Q : prims1) all_b.lo = all_b.lo.cwiseMin(Q.lo), all_b.hi = all_b.hi.cwiseMax(Q.hi);
+      all_b.extent = (all_b.hi - all_b.lo).sum();  // inf with a line
+      for (const Prim& P : prims0) {
+        const double reach = P.extent + all_b.extent;
+        if (std::isfinite(reach) && !boxes_meet(P, all_b, flush + 1e-9 * reach)) continue;
         for (const Prim& Q : prims1) {
           const double extent = P.extent + Q.extent;  // inf for a line
           if (std::isfinite(extent) && !boxes_meet(P, Q, flush + 1e-9 * extent)) continue;
           intersect(P, Q, flush, points);
         }
+      }
       for (const V& x : points) {
         bool duplicate = false;
         for (const V& y : found) duplicate = duplicate || (x - y).squaredNorm() <= 1e-18 * scale * scale;
         if (duplicate) continue;
-        const double g0 = least_gap(loci0, x), g1 = least_gap(loci1, x);
-        const double tol0 = kContactTol * loci0.front().size, tol1 = kContactTol * loci1.front().size;
+        const double g0 = loci0.least_gap(x), g1 = loci1.least_gap(x);
+        const double tol0 = kContactTol * loci0.list.front().size, tol1 = kContactTol * loci1.list.front().size;
         if (std::abs(g0) <= tol0 && std::abs(g1) <= tol1) found.push_back(x);
         if (found.size() == out.size()) break;
       }
