@@ -464,29 +464,37 @@ const typename NarrowPhase<D>::FclShape& NarrowPhase<D>::fcl_of(const ShapePtr<D
     const std::string kind = s->kind();
     if (kind == "cluster") slot->balls = s->hull_balls();
     if (kind == "polygon" || kind == "polyhedron" || kind == "facet") {
-      for (const Ball<D>& v : s->hull_balls()) slot->vertices.push_back(v.center);  // a polytope's (facet's) hull balls are its vertices
+      const auto* poly = dynamic_cast<const ConvexPolytopeShape<D>*>(s.get());
+      // A polytope's (facet's) hull balls are its vertices, and its surface its facets: read
+      // from the polytope without copies (every draft tested for overlap comes here once).
+      if (poly) {
+        slot->vertices = poly->vertices();
+      } else {
+        for (const Ball<D>& v : s->hull_balls()) slot->vertices.push_back(v.center);
+      }
       // Directions up to sign, each once (a triangulated cube has 3 face normals, not 12).
       auto add_unique = [](std::vector<Vec<D>>& list, const Vec<D>& v) {
         for (const Vec<D>& w : list)
           if (std::abs(std::abs(w.dot(v)) - 1) < 1e-12) return;
         list.push_back(v);
       };
-      const auto* poly = dynamic_cast<const ConvexPolytopeShape<D>*>(s.get());
       slot->convex_polytope = poly != nullptr;
       if constexpr (D == 3)
         if (poly)
           for (const auto& e : poly->edges())
             add_unique(slot->polytope_edges,
                        Vec3(poly->vertices()[static_cast<std::size_t>(e.b)] - poly->vertices()[static_cast<std::size_t>(e.a)]).normalized());
-      const SurfaceMesh<D> m = s->surface(0);
-      for (const auto& f : m.facets) {
+      const SurfaceMesh<D> facet_surface = poly ? SurfaceMesh<D>{} : s->surface(0);
+      const std::vector<Vec<D>>& mesh_vertices = poly ? poly->vertices() : facet_surface.vertices;
+      const std::vector<std::array<int, D>>& mesh_facets = poly ? poly->facets() : facet_surface.facets;
+      for (const auto& f : mesh_facets) {
         if constexpr (D == 2) {
-          const Vec2 e = m.vertices[static_cast<std::size_t>(f[1])] - m.vertices[static_cast<std::size_t>(f[0])];
+          const Vec2 e = mesh_vertices[static_cast<std::size_t>(f[1])] - mesh_vertices[static_cast<std::size_t>(f[0])];
           add_unique(slot->normals, Vec2(e.y(), -e.x()).normalized());
         } else {
-          const Vec3& a = m.vertices[static_cast<std::size_t>(f[0])];
-          const Vec3& b = m.vertices[static_cast<std::size_t>(f[1])];
-          const Vec3& c = m.vertices[static_cast<std::size_t>(f[2])];
+          const Vec3& a = mesh_vertices[static_cast<std::size_t>(f[0])];
+          const Vec3& b = mesh_vertices[static_cast<std::size_t>(f[1])];
+          const Vec3& c = mesh_vertices[static_cast<std::size_t>(f[2])];
           add_unique(slot->normals, (b - a).cross(c - a).normalized());
           for (const Vec3& e : {Vec3(b - a), Vec3(c - b), Vec3(a - c)}) add_unique(slot->edges, e.normalized());
         }

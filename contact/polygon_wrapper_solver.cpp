@@ -96,14 +96,6 @@ std::vector<V> hull(std::vector<V> p) {
   return h;
 }
 
-/// Whether direction a comes before b in angle, counting from 0 to 2 pi (the x axis first):
-/// exact (the half-plane, then the sign of the cross product), without trigonometry. Equal
-/// directions come before each other (both edges are taken at once).
-bool not_after(const V& a, const V& b) {
-  if (upper(a) != upper(b)) return upper(a);
-  return cross(a, b) >= 0;
-}
-
 /// Appends to `out` the Minkowski sum f (+) (-m) of two convex polygons given counter-clockwise
 /// without collinear points (append_hull() output: 1 or 2 points for a point or a segment), by the
 /// O(n + m) merge of their edges by angle (paper 004: the wrapper has as many edges as both
@@ -124,19 +116,31 @@ void append_minkowski_difference(std::span<const V> f, std::span<const V> m, std
   const std::size_t i0 = lowest(f, 1), j0 = lowest(m, -1);
   sum.clear();
   std::size_t i = 0, j = 0;
+  const auto next = [](std::size_t k, std::size_t n) { return k + 1 == n ? 0 : k + 1; };
+  std::size_t a = i0, b = j0;  // the current vertices: f[(i0 + i) % nf], m[(j0 + j) % nm]
   while (i < nf || j < nm) {
-    const std::size_t a = (i0 + i) % nf, b = (j0 + j) % nm;
     sum.push_back(f[a] - m[b]);
     // The edge with the smaller direction angle goes first (angles grow from 0 to 2 pi from the
     // lowest vertex; a segment's two edges are antiparallel, which a cross product alone would
     // take for parallel).
     const bool f_left = i < nf && nf > 1, m_left = j < nm && nm > 1;  // edges still to take
-    const V ef = f_left ? V(f[(a + 1) % nf] - f[a]) : V::Zero();
-    const V em = m_left ? V(m[b] - m[(b + 1) % nm]) : V::Zero();  // an edge of -m
-    const bool step_f = i < nf && (!m_left || (f_left && not_after(ef, em)) || nm == 1 || j >= nm);
-    const bool step_m = j < nm && (!f_left || (m_left && not_after(em, ef)) || nf == 1 || i >= nf);
-    if (step_f) ++i;
-    if (step_m) ++j;
+    bool step_f, step_m;
+    if (f_left && m_left) {
+      // Whether one direction comes before the other in angle, from 0 to 2 pi (the x axis
+      // first): exact (the half-plane, then the sign of the cross product), without
+      // trigonometry. Equal directions step both (both edges are taken at once).
+      const V ef = f[next(a, nf)] - f[a];
+      const V em = m[b] - m[next(b, nm)];  // an edge of -m
+      const bool uf = upper(ef), um = upper(em);
+      const double c = cross(ef, em);
+      step_f = uf != um ? uf : c >= 0;
+      step_m = uf != um ? um : -c >= 0;  // cross(em, ef) = -c exactly
+    } else {
+      step_f = i < nf && (!m_left || nm == 1 || j >= nm);
+      step_m = j < nm && (!f_left || nf == 1 || i >= nf);
+    }
+    if (step_f) ++i, a = next(a, nf);
+    if (step_m) ++j, b = next(b, nm);
   }
   // Drops collinear points and fixes the start: in one pass for polygons, by sorting otherwise.
   if (nf < 3 || nm < 3 || !append_convex_cycle(sum, out)) append_hull(sum, out);
@@ -155,54 +159,13 @@ double signed_distance(std::span<const V> q, std::span<const V> normals, const V
   double inside = -std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < q.size(); ++i) inside = std::max(inside, normals[i].dot(x - q[i]));
   if (inside <= 0) return inside;
+  // Outside: the nearest point is on an edge that x sees (of a vertex's two edges, x lies
+  // beyond at least one's line), so the others are skipped.
   double d = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < q.size(); ++i) d = std::min(d, to_segment(q[i], q[(i + 1) % q.size()]));
+  for (std::size_t i = 0; i < q.size(); ++i)
+    if (normals[i].dot(x - q[i]) > 0) d = std::min(d, to_segment(q[i], q[(i + 1) % q.size()]));
   return d;
 }
-
-/// A wrapper (locus of the mobile's reference point), in the frame centred on s0. Its core points
-/// and edge normals live in its set's shared arrays (Loci).
-struct Locus {
-  enum Kind { Rounded, Line, Circle } kind = Rounded;
-  std::uint32_t first = 0, count = 0;  ///< Rounded: Minkowski core, counter-clockwise: Loci::points[first, first + count)
-  double rho = 0;         ///< Rounded: thickening; Circle: radius
-  V n = V::Zero();        ///< Line: unit normal, gap = n.x - h
-  double h = 0;
-  V c = V::Zero();        ///< Circle: centre, gap = rho - |x - c| (the mobile inside)
-  V centre = V::Zero();   ///< bounding circle (Rounded, Circle)
-  double reach = 0;
-  double size = 1;        ///< tolerance size
-};
-
-/// The wrappers of one body, stored flat: rebuilt for every neighbour without allocating.
-struct Loci {
-  std::vector<Locus> list;
-  std::vector<V> points;   ///< the rounded wrappers' core points
-  std::vector<V> normals;  ///< parallel to points, for cores of 2 points or more: outward unit normal of edge i -> i + 1 (bound())
-
-  void clear() { list.clear(), points.clear(), normals.clear(); }
-  std::span<const V> q(const Locus& L) const { return {points.data() + L.first, L.count}; }
-  std::span<const V> normals_of(const Locus& L) const { return {normals.data() + L.first, L.count}; }
-  /// Starts a rounded wrapper whose core points the caller appends to `points`.
-  Locus& open_rounded() {
-    Locus& L = list.emplace_back();
-    L.first = static_cast<std::uint32_t>(points.size());
-    return L;
-  }
-  double gap(const Locus& L, const V& x) const {
-    switch (L.kind) {
-      case Locus::Rounded: return signed_distance(q(L), normals_of(L), x) - L.rho;
-      case Locus::Line: return L.n.dot(x) - L.h;
-      case Locus::Circle: return L.rho - (x - L.c).norm();
-    }
-    return 0;
-  }
-  double least_gap(const V& x) const {
-    double g = std::numeric_limits<double>::infinity();
-    for (const Locus& L : list) g = std::min(g, gap(L, x));
-    return g;
-  }
-};
 
 /// A piece of a wrapper's boundary: a segment [a, b], a line through a along unit b, or an arc of
 /// centre c and radius r from direction n0 to n1 counter-clockwise (a full circle if `full`).
@@ -228,6 +191,55 @@ struct Prim {
 bool boxes_meet(const Prim& P, const Prim& Q, double margin) {
   return (P.lo.array() <= Q.hi.array() + margin).all() && (Q.lo.array() <= P.hi.array() + margin).all();
 }
+
+/// A wrapper (locus of the mobile's reference point), in the frame centred on s0. Its core points
+/// and edge normals live in its set's shared arrays (Loci).
+struct Locus {
+  enum Kind { Rounded, Line, Circle } kind = Rounded;
+  std::uint32_t first = 0, count = 0;  ///< Rounded: Minkowski core, counter-clockwise: Loci::points[first, first + count)
+  double rho = 0;         ///< Rounded: thickening; Circle: radius
+  V n = V::Zero();        ///< Line: unit normal, gap = n.x - h
+  double h = 0;
+  V c = V::Zero();        ///< Circle: centre, gap = rho - |x - c| (the mobile inside)
+  V centre = V::Zero();   ///< bounding circle (Rounded, Circle)
+  double reach = 0;
+  double size = 1;        ///< tolerance size
+  std::uint32_t prim_first = 0, prim_count = 0;  ///< its boundary pieces: Loci::prims[prim_first, prim_first + prim_count)
+  Prim box;               ///< the box of all its pieces (infinite with a line)
+};
+
+/// The wrappers of one body, stored flat: rebuilt for every neighbour without allocating.
+struct Loci {
+  std::vector<Locus> list;
+  std::vector<V> points;   ///< the rounded wrappers' core points
+  std::vector<V> normals;  ///< parallel to points, for cores of 2 points or more: outward unit normal of edge i -> i + 1 (bound())
+
+  std::vector<Prim> prims;  ///< the wrappers' boundary pieces (finish())
+
+  void clear() { list.clear(), points.clear(), normals.clear(), prims.clear(); }
+  std::span<const Prim> prims_of(const Locus& L) const { return {prims.data() + L.prim_first, L.prim_count}; }
+  std::span<const V> q(const Locus& L) const { return {points.data() + L.first, L.count}; }
+  std::span<const V> normals_of(const Locus& L) const { return {normals.data() + L.first, L.count}; }
+  /// Starts a rounded wrapper whose core points the caller appends to `points`.
+  Locus& open_rounded() {
+    Locus& L = list.emplace_back();
+    L.first = static_cast<std::uint32_t>(points.size());
+    return L;
+  }
+  double gap(const Locus& L, const V& x) const {
+    switch (L.kind) {
+      case Locus::Rounded: return signed_distance(q(L), normals_of(L), x) - L.rho;
+      case Locus::Line: return L.n.dot(x) - L.h;
+      case Locus::Circle: return L.rho - (x - L.c).norm();
+    }
+    return 0;
+  }
+  double least_gap(const V& x) const {
+    double g = std::numeric_limits<double>::infinity();
+    for (const Locus& L : list) g = std::min(g, gap(L, x));
+    return g;
+  }
+};
 
 void add_prims(const Loci& set, const Locus& L, std::vector<Prim>& out) {
   if (L.kind == Locus::Line) {
@@ -346,13 +358,17 @@ void intersect(const Prim& P, const Prim& Q, double flush, std::vector<V>& out) 
   out.push_back(seg.a + hi * d);
 }
 
-/// The cores of a fixed particle (frame-local) or the mobile (offsets), with their radii.
-std::vector<RoundedCore<2>> cores_of(const Shape<2>* shape, const Mat<2>& rotation, const V& position, double radius) {
-  if (shape == nullptr) return {{{position}, radius}};
-  std::vector<RoundedCore<2>> cores = shape->rounded_cores();
+/// The cores of a fixed particle (frame-local) or the mobile (offsets), with their radii, into
+/// `cores` (its storage reused).
+void cores_of(const Shape<2>* shape, const Mat<2>& rotation, const V& position, double radius, std::vector<RoundedCore<2>>& cores) {
+  if (shape == nullptr) {
+    cores.resize(1);
+    cores[0].points.assign(1, position), cores[0].radius = radius;
+    return;
+  }
+  shape->rounded_cores(cores);
   for (auto& c : cores)
     for (V& p : c.points) p = position + rotation * p;
-  return cores;
 }
 
 /// Closes the rounded wrapper last opened (its core points appended to set.points): its point
@@ -377,8 +393,8 @@ struct MobileCores {
   std::vector<std::vector<V>> hulls;
 };
 
-/// The wrappers of one fixed body for the mobile cores (frame centred on `o`).
-void loci_of(const Body<2>& b, const V& o, const MobileCores& mobile, double mobile_radius, Loci& out) {
+/// The wrappers of one fixed body for the mobile cores (frame centred on `o`), without their pieces.
+void build_loci(const Body<2>& b, const V& o, const MobileCores& mobile, double mobile_radius, Loci& out) {
   out.clear();
   thread_local std::vector<V> scratch, core_hull, sum;
   if (b.is_wall()) {
@@ -409,7 +425,8 @@ void loci_of(const Body<2>& b, const V& o, const MobileCores& mobile, double mob
     return;
   }
   const Particle<2>* q = b.shaped;
-  const auto fixed = cores_of(q ? q->shape.get() : nullptr, q ? q->pose.rotation : Mat<2>::Identity(), b.center - o, b.radius);
+  thread_local std::vector<RoundedCore<2>> fixed;
+  cores_of(q ? q->shape.get() : nullptr, q ? q->pose.rotation : Mat<2>::Identity(), b.center - o, b.radius, fixed);
   const double size = std::min(b.radius, mobile_radius);
   for (const RoundedCore<2>& F : fixed) {
     core_hull.clear();
@@ -428,6 +445,19 @@ void loci_of(const Body<2>& b, const V& o, const MobileCores& mobile, double mob
   }
 }
 
+/// The wrappers of one fixed body for the mobile cores (frame centred on `o`), with their pieces.
+void loci_of(const Body<2>& b, const V& o, const MobileCores& mobile, double mobile_radius, Loci& out) {
+  build_loci(b, o, mobile, mobile_radius, out);
+  for (Locus& L : out.list) {
+    L.prim_first = static_cast<std::uint32_t>(out.prims.size());
+    add_prims(out, L, out.prims);
+    L.prim_count = static_cast<std::uint32_t>(out.prims.size() - L.prim_first);
+    L.box.lo = V::Constant(std::numeric_limits<double>::infinity()), L.box.hi = -L.box.lo;
+    for (const Prim& Q : out.prims_of(L)) L.box.lo = L.box.lo.cwiseMin(Q.lo), L.box.hi = L.box.hi.cwiseMax(Q.hi);
+    L.box.extent = (L.box.hi - L.box.lo).sum();
+  }
+}
+
 bool may_meet(const Locus& a, const Locus& b) {
   if (a.kind == Locus::Line || b.kind == Locus::Line) {
     const Locus& l = a.kind == Locus::Line ? a : b;
@@ -443,7 +473,6 @@ bool may_meet(const Locus& a, const Locus& b) {
 int PolygonWrapperSolver::solve(std::span<const Body<2>> fixed, const Mobile<2>& mobile, std::span<Placement<2>> out) const {
   if (fixed.size() != 2 || out.empty()) return 0;
   thread_local Loci loci0, loci1;
-  thread_local std::vector<Prim> prims0, prims1;
   thread_local std::vector<V> points, found;
   // Frame on the first particle (its reference point): offsets of 1e6 keep their digits.
   const Body<2>* frame = fixed[0].is_wall() ? &fixed[1] : &fixed[0];
@@ -462,7 +491,7 @@ int PolygonWrapperSolver::solve(std::span<const Body<2>> fixed, const Mobile<2>&
   } cache;
   if (cache.shape != mobile.shape.get() || cache.rotation != mobile.rotation || cache.radius != mobile.radius || !cache.shape) {
     cache.shape = mobile.shape.get(), cache.rotation = mobile.rotation, cache.radius = mobile.radius;
-    cache.mobile.cores = cores_of(mobile.shape.get(), mobile.rotation, V::Zero(), mobile.radius);
+    cores_of(mobile.shape.get(), mobile.rotation, V::Zero(), mobile.radius, cache.mobile.cores);
     cache.mobile.hulls.clear();
     for (const RoundedCore<2>& M : cache.mobile.cores) cache.mobile.hulls.push_back(hull(M.points));
     cache.first = nullptr;
@@ -481,20 +510,15 @@ int PolygonWrapperSolver::solve(std::span<const Body<2>> fixed, const Mobile<2>&
   found.clear();  // distinct: positions closer than 1e-9 of the sizes are one
   const double scale = mobile.radius + (fixed[0].is_wall() ? 0 : fixed[0].radius);
   for (const Locus& A : loci0.list) {
-    prims0.clear();
-    add_prims(loci0, A, prims0);
+    const std::span<const Prim> prims0 = loci0.prims_of(A);
     for (const Locus& B : loci1.list) {
       if (!may_meet(A, B)) continue;
-      prims1.clear();
-      add_prims(loci1, B, prims1);
+      const std::span<const Prim> prims1 = loci1.prims_of(B);
       points.clear();
       const double flush = 0.5 * kContactTol * std::min(A.size, B.size);
       // The box of all B's pieces: a piece of A beyond it (by more than any pair's margin) meets
       // none of them, which spares most of the piece pairs their box tests.
-      Prim all_b;
-      all_b.lo = V::Constant(std::numeric_limits<double>::infinity()), all_b.hi = -all_b.lo;
-      for (const Prim& Q : prims1) all_b.lo = all_b.lo.cwiseMin(Q.lo), all_b.hi = all_b.hi.cwiseMax(Q.hi);
-      all_b.extent = (all_b.hi - all_b.lo).sum();  // inf with a line
+      const Prim& all_b = B.box;
       for (const Prim& P : prims0) {
         const double reach = P.extent + all_b.extent;
         if (std::isfinite(reach) && !boxes_meet(P, all_b, flush + 1e-9 * reach)) continue;

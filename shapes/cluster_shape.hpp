@@ -29,10 +29,9 @@ class ClusterShape final : public Shape<D> {
   Vec<D> support(const Vec<D>& u) const override;
   bool contains(const Vec<D>& x) const override;
   std::vector<Ball<D>> hull_balls() const override { return members_; }
-  std::vector<RoundedCore<D>> rounded_cores() const override {
-    std::vector<RoundedCore<D>> cores;
-    for (const Ball<D>& b : members_) cores.push_back({{b.center}, b.radius});
-    return cores;
+  void rounded_cores(std::vector<RoundedCore<D>>& out) const override {
+    out.resize(members_.size());
+    for (std::size_t i = 0; i < members_.size(); ++i) out[i].points.assign(1, members_[i].center), out[i].radius = members_[i].radius;
   }
   /// 2D: the union's outline (exposed arcs only); 3D: every member sphere (overlapping meshes).
   SurfaceMesh<D> surface(int resolution) const override;

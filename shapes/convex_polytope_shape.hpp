@@ -49,7 +49,10 @@ class ConvexPolytopeShape final : public Shape<D> {
   Vec<D> support(const Vec<D>& u) const override;
   bool contains(const Vec<D>& x) const override;
   std::vector<Ball<D>> hull_balls() const override;
-  std::vector<RoundedCore<D>> rounded_cores() const override { return {{vertices_, 0.0}}; }
+  void rounded_cores(std::vector<RoundedCore<D>>& out) const override {
+    out.resize(1);
+    out[0].points.assign(vertices_.begin(), vertices_.end()), out[0].radius = 0.0;
+  }
   SurfaceMesh<D> surface(int resolution) const override;
   std::vector<FclPart<D>> fcl_parts() const override;
   ShapePtr<D> scaled(double s) const override;

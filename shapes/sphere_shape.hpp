@@ -17,7 +17,10 @@ class SphereShape final : public Shape<D> {
   double measure() const override;
   double bounding_radius() const override { return r_; }
   double inscribed_radius() const override { return r_; }
-  std::vector<RoundedCore<D>> rounded_cores() const override { return {{{Vec<D>::Zero()}, r_}}; }
+  void rounded_cores(std::vector<RoundedCore<D>>& out) const override {
+    out.resize(1);
+    out[0].points.assign(1, Vec<D>::Zero()), out[0].radius = r_;
+  }
   Vec<D> support(const Vec<D>& u) const override;
   bool contains(const Vec<D>& x) const override { return x.squaredNorm() <= r_ * r_; }
   std::vector<Ball<D>> hull_balls() const override { return {Ball<D>{Vec<D>::Zero(), r_}}; }

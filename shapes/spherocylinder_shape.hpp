@@ -24,7 +24,10 @@ class SpherocylinderShape final : public Shape<D> {
   Vec<D> support(const Vec<D>& u) const override;
   bool contains(const Vec<D>& x) const override;
   std::vector<Ball<D>> hull_balls() const override { return {Ball<D>{end_a(), r_}, Ball<D>{end_b(), r_}}; }
-  std::vector<RoundedCore<D>> rounded_cores() const override { return {{{end_a(), end_b()}, r_}}; }
+  void rounded_cores(std::vector<RoundedCore<D>>& out) const override {
+    out.resize(1);
+    out[0].points.assign({end_a(), end_b()}), out[0].radius = r_;
+  }
   SurfaceMesh<D> surface(int resolution) const override;
   std::vector<FclPart<D>> fcl_parts() const override;
   ShapePtr<D> scaled(double s) const override;
