@@ -12,6 +12,7 @@
 #include "contact/ellipsoid_gap.hpp"
 #include "contact/segment_distance.hpp"
 #include "contact/swept_ball.hpp"
+#include "core/geometry/convex_polygon.hpp"
 #include "shapes/ellipsoid_shape.hpp"
 #include "shapes/cluster_shape.hpp"
 #include "shapes/convex_polytope_shape.hpp"
@@ -221,25 +222,6 @@ AxisSeparation<D> separation_along(const std::vector<Vec<D>>& va, const std::vec
   return {min_b - max_a, min_a - max_b};
 }
 
-/// Distance between two disjoint convex polygons, vertices in order (ConvexPolytopeShape<2>: the
-/// edges are (i, i + 1)): their nearest points are a vertex of one and a point on an edge of the
-/// other.
-double apart_polygons_distance(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
-  const auto to_edges = [](const Vec2& p, const std::vector<Vec2>& poly) {
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-      const Vec2 e = poly[(i + 1) % poly.size()] - poly[i];
-      const double t = std::clamp((p - poly[i]).dot(e) / e.squaredNorm(), 0.0, 1.0);
-      best = std::min(best, (p - poly[i] - t * e).squaredNorm());
-    }
-    return best;
-  };
-  double d2 = std::numeric_limits<double>::infinity();
-  for (const Vec2& p : a) d2 = std::min(d2, to_edges(p, b));
-  for (const Vec2& p : b) d2 = std::min(d2, to_edges(p, a));
-  return std::sqrt(d2);
-}
-
 template <int D>
 Gap<D> polytope_sat_gap(const std::vector<Vec<D>>& va, const std::vector<Vec<D>>& vb, const std::vector<Vec<D>>& axes,
                         const Vec<D>& u0) {
@@ -366,12 +348,6 @@ const typename NarrowPhase<D>::PairGap* NarrowPhase<D>::pair_of(const char* kind
   return g;
 }
 
-template <int D>
-Gap<D> NarrowPhase<D>::gap(const Particle<D>& a, const Particle<D>& b) const {
-  if (const PairGap* g = pair_of(a.shape->kind(), b.shape->kind())) return (*g)(a, b);
-  return fcl_gap(a, b);
-}
-
 namespace {
 /// Both of the polytope kind (checked before fcl_of, which would build FCL geometry for shapes
 /// whose gaps are all analytic).
@@ -380,6 +356,41 @@ bool polytope_kinds(const Particle<D>& a, const Particle<D>& b) {
   return std::strcmp(a.shape->kind(), ConvexPolytopeShape<D>::kKind) == 0 && std::strcmp(b.shape->kind(), ConvexPolytopeShape<D>::kKind) == 0;
 }
 }  // namespace
+
+template <int D>
+Gap<D> NarrowPhase<D>::gap(const Particle<D>& a, const Particle<D>& b) const {
+  if (const PairGap* g = pair_of(a.shape->kind(), b.shape->kind())) return (*g)(a, b);
+  if constexpr (D == 2)
+    if (polytope_kinds(a, b)) {
+      const FclShape& fa = fcl_of(a.shape);
+      const FclShape& fb = fcl_of(b.shape);
+      if (fa.convex_polytope && fb.convex_polytope) return polygon_gap(a, fa, b, fb);
+    }
+  return fcl_gap(a, b);
+}
+
+template <int D>
+Gap<D> NarrowPhase<D>::polygon_gap(const Particle<D>& a, const FclShape& fa, const Particle<D>& b, const FclShape& fb) const {
+  if constexpr (D == 2) {
+    // Vertices relative to a's position (their digits kept far from the origin), in order.
+    world_a_.clear(), world_b_.clear(), axes_scratch_.clear();
+    const Vec2 offset = b.pose.position - a.pose.position;
+    for (const Vec2& v : fa.vertices) world_a_.push_back(a.pose.rotation * v);
+    for (const Vec2& v : fb.vertices) world_b_.push_back(offset + b.pose.rotation * v);
+    for (const Vec2& n : fa.normals) axes_scratch_.push_back(a.pose.rotation * n);
+    for (const Vec2& n : fb.normals) axes_scratch_.push_back(b.pose.rotation * n);
+    // The edge normals are every separating axis: the largest separation is the gap on overlap
+    // (minus the penetration depth), and apart polygons are as far as their nearest points.
+    const Gap<2> sat = polytope_sat_gap<2>(world_a_, world_b_, axes_scratch_, offset);
+    if (sat.value <= 0) return sat;
+    Vec2 on_a, on_b;
+    const double d = convex_polygon::apart_nearest(world_a_, world_b_, on_a, on_b);
+    return {d, unit_or<2>(Vec2(on_b - on_a), sat.normal)};
+  } else {
+    (void)a, (void)fa, (void)b, (void)fb;
+    return {};
+  }
+}
 
 template <int D>
 double NarrowPhase<D>::polytope_separation(const Particle<D>& a, const FclShape& fa, const Particle<D>& b, const FclShape& fb,
@@ -448,7 +459,8 @@ bool NarrowPhase<D>::gap_exceeds(const Particle<D>& a, const Particle<D>& b, dou
         // an overlap or a touch, s > 0 apart, where the vertex-edge distance is exact (FCL's
         // GJK on the prisms cost 5 % of a polygon packing here).
         if (s <= 0 && d >= 0) return false;
-        if (s > 0) return apart_polygons_distance(world_a_, world_b_) > d;
+        // The vertices are in order (ConvexPolytopeShape<2>: edges (i, i + 1)).
+        if (s > 0) return convex_polygon::apart_distance(world_a_, world_b_) > d;
       }
     }
   }

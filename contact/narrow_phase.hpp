@@ -4,10 +4,11 @@
 // ω of paper 004 (Eq. 3) in its distance form: ω = 0 at outer contact, < 0 on overlap (minus
 // the penetration depth), > 0 apart, and |∇ω| = 1 wherever it is smooth.
 //
-// Analytic fast paths (registered by kind pair): sphere-sphere, sphere-spherocylinder and
-// spherocylinder-spherocylinder through segment distance (paper 004 Eq. 5-6), clusters of
-// balls against those, and ellipsoids against ellipsoids and spheres (Newton on the support
-// functions, ellipsoid_gap.hpp). Every other pair goes through FCL's distance query with the libccd GJK
+// Exact without FCL: two convex polygons (separating axes on overlap, nearest points apart,
+// core/geometry/convex_polygon.hpp). Analytic fast paths (registered by kind pair):
+// sphere-sphere, sphere-spherocylinder and spherocylinder-spherocylinder through segment distance
+// (paper 004 Eq. 5-6), clusters of balls against those, and ellipsoids against ellipsoids and
+// spheres (Newton on the support functions, ellipsoid_gap.hpp). Every other pair goes through FCL's distance query with the libccd GJK
 // solver (exact when apart; the INDEP solver is wrong, see dependencies.md). On overlap the depth
 // comes from our own separating-axis search over support functions, not from FCL's EPA, whose
 // assertion aborts the process on some touching polytopes (seen packing cubes). Clusters are
@@ -72,6 +73,9 @@ class NarrowPhase {
   struct FclShape;
   const FclShape& fcl_of(const ShapePtr<D>& s) const;
   Gap<D> fcl_gap(const Particle<D>& a, const Particle<D>& b) const;
+  /// Two convex polygons (2D): the separating axes on overlap, the nearest points apart; exact
+  /// to rounding, no FCL geometry built.
+  Gap<D> polygon_gap(const Particle<D>& a, const FclShape& fa, const Particle<D>& b, const FclShape& fb) const;
   /// Two convex polytopes: the largest separation s(u) over the separating-axis candidates (with
   /// `edges`, every one: their gap on overlap; a lower bound of the gap in any case), stopped
   /// early once it exceeds `enough`.
