@@ -46,12 +46,20 @@ struct Obstacle {
   }
 };
 
-/// Is the unit vector p (on the great circle through a and b) on the shorter arc from a to b?
-bool on_arc(const V& a, const V& b, const V& p) {
-  constexpr double kSlack = 1e-12;
-  const V ab = a.cross(b);
-  return a.cross(p).dot(ab) >= -kSlack && p.cross(b).dot(ab) >= -kSlack && p.dot(a + b) > 0;
-}
+/// An edge's Gauss arc: the great-circle arc between its two faces' unit normals a and b, with
+/// what every test against it needs (computed once per edge, not per edge pair).
+struct GaussArc {
+  V a, b, ab, sum;  ///< ab = a x b, sum = a + b
+  V along;          ///< the edge's vector
+  double length;
+
+  GaussArc(const V& a_, const V& b_, const V& along_) : a(a_), b(b_), ab(a_.cross(b_)), sum(a_ + b_), along(along_), length(along_.norm()) {}
+  /// Is the unit vector p (on the great circle through a and b) on the shorter arc from a to b?
+  bool holds(const V& p) const {
+    constexpr double kSlack = 1e-12;
+    return a.cross(p).dot(ab) >= -kSlack && p.cross(b).dot(ab) >= -kSlack && p.dot(sum) > 0;
+  }
+};
 
 double max_dot(const std::vector<V>& pts, const V& u) {
   double m = -kInf;
@@ -64,12 +72,16 @@ struct TurnedMobile {
   const Poly* shape = nullptr;
   Mat<3> rotation = Mat<3>::Identity();
   std::vector<V> vertices, normals;
+  std::vector<GaussArc> arcs;  ///< per edge of -A: the arc between its faces' normals (of -A)
 
   void set(const Poly& s, const Mat<3>& R) {
     shape = &s, rotation = R;
-    vertices.clear(), normals.clear();
+    vertices.clear(), normals.clear(), arcs.clear();
     for (const V& v : s.vertices()) vertices.push_back(R * v);
     for (const V& n : s.plane_normals()) normals.push_back(R * n);
+    for (const Poly::Edge& e : s.edges())
+      arcs.emplace_back(-normals[static_cast<std::size_t>(e.plane0)], -normals[static_cast<std::size_t>(e.plane1)],
+                        vertices[static_cast<std::size_t>(e.b)] - vertices[static_cast<std::size_t>(e.a)]);
   }
 };
 
@@ -96,21 +108,20 @@ void polytope_obstacle(const Poly& B, const Mat<3>& RB, const V& c, const Turned
   }
   // Edge-edge: the planes perpendicular to an edge of B and an edge of -A whose Gauss arcs (from
   // one adjacent face normal to the other) cross; both edges are supports along that normal.
+  const std::vector<Poly::Edge>& a_edges = A.shape->edges();
   for (const Poly::Edge& eb : B.edges()) {
-    const V& nb0 = bn[static_cast<std::size_t>(eb.plane0)];
-    const V& nb1 = bn[static_cast<std::size_t>(eb.plane1)];
-    const V db = bv[static_cast<std::size_t>(eb.b)] - bv[static_cast<std::size_t>(eb.a)];
-    for (const Poly::Edge& ea : A.shape->edges()) {
-      const V na0 = -A.normals[static_cast<std::size_t>(ea.plane0)], na1 = -A.normals[static_cast<std::size_t>(ea.plane1)];
-      const V da = A.vertices[static_cast<std::size_t>(ea.b)] - A.vertices[static_cast<std::size_t>(ea.a)];
-      V p = db.cross(da);
+    const GaussArc arc_b(bn[static_cast<std::size_t>(eb.plane0)], bn[static_cast<std::size_t>(eb.plane1)],
+                         bv[static_cast<std::size_t>(eb.b)] - bv[static_cast<std::size_t>(eb.a)]);
+    for (std::size_t k = 0; k < a_edges.size(); ++k) {
+      const GaussArc& arc_a = A.arcs[k];
+      V p = arc_b.along.cross(arc_a.along);
       const double pn = p.norm();
-      if (!(pn > 1e-12 * db.norm() * da.norm())) continue;  // parallel edges: no edge-edge face
+      if (!(pn > 1e-12 * arc_b.length * arc_a.length)) continue;  // parallel edges: no edge-edge face
       p /= pn;
-      if (p.dot(nb0 + nb1) < 0) p = -p;
-      if (!on_arc(nb0, nb1, p) || !on_arc(na0, na1, p)) continue;
+      if (p.dot(arc_b.sum) < 0) p = -p;
+      if (!arc_b.holds(p) || !arc_a.holds(p)) continue;
       O.n.push_back(p);
-      O.h.push_back(p.dot(bv[static_cast<std::size_t>(eb.a)]) - p.dot(A.vertices[static_cast<std::size_t>(ea.a)]));
+      O.h.push_back(p.dot(bv[static_cast<std::size_t>(eb.a)]) - p.dot(A.vertices[static_cast<std::size_t>(a_edges[k].a)]));
     }
   }
 }
