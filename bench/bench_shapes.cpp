@@ -1,6 +1,6 @@
-// The general-shape machinery: narrow-phase gaps (analytic capsule and ellipsoid paths, FCL
-// polytope path) and one capsule contact problem, by minimisation (per algorithm) and by the gap
-// Newton solver.
+// The general-shape machinery: narrow-phase gaps (analytic capsule and ellipsoid paths, the exact
+// convex polygon path, FCL polytope path), one capsule contact problem, by minimisation (per
+// algorithm) and by the gap Newton solver, and one hexagon contact problem by the polygon wrapper.
 // A separate executable: frontpack_bench (spheres) must link no FCL and no NLopt.
 #include <benchmark/benchmark.h>
 
@@ -9,6 +9,7 @@
 
 #include "contact/gap_newton_solver.hpp"
 #include "contact/minimisation_solver.hpp"
+#include "contact/polygon_wrapper_solver.hpp"
 #include "core/sampling/rng.hpp"
 #include "shapes/shape_registry.hpp"
 #include "shapes/ellipsoid_shape.hpp"
@@ -113,5 +114,55 @@ void BM_GapNewtonCapsules(benchmark::State& state) {
   capsule_solves(state, GapNewtonSolver<3>(np, MinimisationOptions{}.gap_tolerance), "gap newton");
 }
 BENCHMARK(BM_GapNewtonCapsules);
+
+/// Regular hexagons of circumscribed radius 1 at random poses in a square of side `side`.
+std::vector<Particle<2>> scatter_hexagons(int n, double side, std::uint64_t seed) {
+  ParticleTemplateSpec spec;
+  spec.family = "polygon";
+  spec.parameters.numbers["sides"] = 6;
+  const ShapePtr<2> hexagon = ShapeFamilies::builtin().prototype<2>(spec).shape;
+  Rng rng(seed);
+  std::vector<Particle<2>> out(static_cast<std::size_t>(n));
+  for (auto& p : out) {
+    p.shape = hexagon;
+    p.pose.position = Vec2(rng.uniform(0, side), rng.uniform(0, side));
+    p.pose.rotation = rotation_2d(2 * kPi * rng.uniform01());
+  }
+  return out;
+}
+
+/// Two convex polygons (separating axes on overlap, nearest points apart: no FCL); the square's
+/// side sets the overlapping share (15: most pairs overlap, 60: most are apart).
+void BM_GapPolygons(benchmark::State& state) {
+  const auto ps = scatter_hexagons(1024, static_cast<double>(state.range(0)) / 10.0, 4);
+  NarrowPhase<2> np;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(np.gap(ps[k & 1023], ps[(k + 1) & 1023]));
+    ++k;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_GapPolygons)->Arg(15)->Arg(60);
+
+/// Contact problems of the 2D front: a hexagon (fixed orientation) against two hexagons at random
+/// poses in a square of side 4 (some without a solution), one solve per iteration, cycling
+/// through 256 problems; the first body stays for 8 problems in a row, as s0 does in the front.
+void BM_PolygonWrapperHexagons(benchmark::State& state) {
+  const auto fixed = scatter_hexagons(2 * 256, 4.0, 5);
+  std::vector<std::array<Body<2>, 2>> problems;
+  for (int k = 0; k < 256; ++k)
+    problems.push_back({Body<2>::of_particle(fixed[static_cast<std::size_t>(2 * (k / 8 * 8))]),
+                        Body<2>::of_particle(fixed[static_cast<std::size_t>(2 * k + 1)])});
+  const Mobile<2> mobile = Mobile<2>::of_shape(fixed[0].shape, rotation_2d(0.3));
+  const PolygonWrapperSolver solver;
+  std::array<Placement<2>, 4> out;
+  std::size_t k = 0;
+  int found = 0;
+  for (auto _ : state) found += solver.solve(problems[k++ & 255], mobile, out);
+  state.SetItemsProcessed(state.iterations());
+  state.counters["solutions_per_solve"] = static_cast<double>(found) / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_PolygonWrapperHexagons);
 
 }  // namespace

@@ -68,9 +68,8 @@ struct Locus {
 struct Loci {
   std::vector<Locus> list;
   std::vector<V> points;   ///< the rounded wrappers' core points
-  std::vector<V> normals;  ///< parallel to points, for cores of 2 points or more: outward unit normal of edge i -> i + 1 (bound())
-
-  std::vector<Prim> prims;  ///< the wrappers' boundary pieces (finish())
+  std::vector<V> normals;  ///< parallel to points, for cores of 2 points or more: outward unit normal of edge i -> i + 1 (close_rounded())
+  std::vector<Prim> prims; ///< the wrappers' boundary pieces (loci_of())
 
   void clear() { list.clear(), points.clear(), normals.clear(), prims.clear(); }
   std::span<const Prim> prims_of(const Locus& L) const { return {prims.data() + L.prim_first, L.prim_count}; }
