@@ -26,9 +26,10 @@ struct NarrowPhase<D>::FclShape {
   ShapePtr<D> keep_alive;  // the cache key is the address: keeping the shape alive keeps it unique
   /// FCL's geometry, built at the first distance query: a polytope pair that the separating axes
   /// answer never needs it (building an fcl::Convex, topology checks included, cost 14 % of a
-  /// 2D polygon run, for drafts tested once and forgotten).
-  const std::vector<FclPart<D>>& parts() const {
-    if (!parts_built) parts_cache = keep_alive->fcl_parts(), parts_built = true;
+  /// 2D polygon run, for drafts tested once and forgotten). In FCL's length unit (fcl_unit()):
+  /// the shape scaled by 1 / unit, exactly (a power of two).
+  const std::vector<FclPart<D>>& parts(double unit) const {
+    if (!parts_built) parts_cache = (unit == 1 ? keep_alive : keep_alive->scaled(1 / unit))->fcl_parts(), parts_built = true;
     return parts_cache;
   }
   mutable std::vector<FclPart<D>> parts_cache;
@@ -324,6 +325,7 @@ void NarrowPhase<D>::forget(const Shape<D>* s) const {
 template <int D>
 void NarrowPhase<D>::clear_cache() const {
   cache_.clear();
+  unit_ = 0;  // no geometry left in the old unit
 }
 
 template <int D>
@@ -517,6 +519,18 @@ const typename NarrowPhase<D>::FclShape& NarrowPhase<D>::fcl_of(const ShapePtr<D
 }
 
 template <int D>
+double NarrowPhase<D>::fcl_unit(double size) const {
+  if (!(unit_ > 0)) {
+    // libccd's tolerances are absolute: a scene of size 2^-60 had its overlaps pass as contacts
+    // (measured: 20 cylinders, 22 overlapping pairs, reported as none). Far from unit size, FCL
+    // gets lengths scaled by a power of two (exact); near it, none (the same numbers as ever).
+    const bool near_unit = size >= std::ldexp(1.0, -16) && size <= std::ldexp(1.0, 16);
+    unit_ = near_unit || !(size > 0) || !std::isfinite(size) ? 1.0 : std::ldexp(1.0, std::ilogb(size));
+  }
+  return unit_;
+}
+
+template <int D>
 Gap<D> NarrowPhase<D>::fcl_gap(const Particle<D>& a, const Particle<D>& b) const {
   const FclShape& fa = fcl_of(a.shape);
   const FclShape& fb = fcl_of(b.shape);
@@ -529,7 +543,9 @@ Gap<D> NarrowPhase<D>::fcl_gap(const Particle<D>& a, const Particle<D>& b) const
   // Length scale: the smaller size (a vertex wall is a particle of radius 0: the other one's).
   const double ra = a.bounding_radius(), rb = b.bounding_radius();
   const double size = ra > 0 && rb > 0 ? std::min(ra, rb) : std::max(ra, rb);
-  request.distance_tolerance = 1e-10 * size;  // 1e-8: GJK errors up to 3e-4 of the size on curved pairs (measured)
+  // FCL works in its own length unit (scaled lengths: `inv`), where the pair is about unit size.
+  const double unit = fcl_unit(std::max(ra, rb)), inv = 1 / unit;
+  request.distance_tolerance = 1e-10 * size * inv;  // 1e-8: GJK errors up to 3e-4 of the size on curved pairs (measured)
   // GJK in distance mode reports a tiny positive distance (~1e-16), not an overlap, when curved
   // shapes overlap slightly: its simplex converges onto the origin without enclosing it (always
   // for 2D shapes embedded in z = 0 whose support points stay in that plane). Distances this
@@ -551,20 +567,22 @@ Gap<D> NarrowPhase<D>::fcl_gap(const Particle<D>& a, const Particle<D>& b) const
     }
   };
   Gap<D> best{std::numeric_limits<double>::infinity(), Vec<D>::Zero()};
-  const std::vector<FclPart<D>>& parts_a = fa.parts();
-  const std::vector<FclPart<D>>& parts_b = fb.parts();
+  const std::vector<FclPart<D>>& parts_a = fa.parts(unit);
+  const std::vector<FclPart<D>>& parts_b = fb.parts(unit);
+  Pose<D> pose_a = a.pose, pose_b = b.pose;  // in FCL's unit
+  pose_a.position *= inv, pose_b.position *= inv;
   for (std::size_t i = 0; i < parts_a.size(); ++i)
     for (std::size_t j = 0; j < parts_b.size(); ++j) {
       const FclPart<D>& pa = parts_a[i];
       const FclPart<D>& pb = parts_b[j];
       fcl::DistanceResultd result;
       ++fcl_queries_;
-      const fcl::Transform3d ta = part_transform(a.pose, pa), tb = part_transform(b.pose, pb);
+      const fcl::Transform3d ta = part_transform(pose_a, pa), tb = part_transform(pose_b, pb);
       fcl::distance(pa.geometry.get(), ta, pb.geometry.get(), tb, request, result);
       Gap<D> g;
-      if (result.min_distance > near) {
+      if (result.min_distance * unit > near) {
         // Nearest points are in the world frame: b's point minus a's is the outward direction.
-        g.value = result.min_distance;
+        g.value = result.min_distance * unit;
         g.normal = unit_or<D>(project<D>(result.nearest_points[1] - result.nearest_points[0]),
                               Vec<D>(b.pose.position - a.pose.position));
       } else {
@@ -588,7 +606,9 @@ Gap<D> NarrowPhase<D>::fcl_gap(const Particle<D>& a, const Particle<D>& b) const
           const ConvexPiece<D> A{&a, fa.balls.empty() ? nullptr : &fa.balls[i]};
           const ConvexPiece<D> B{&b, fb.balls.empty() ? nullptr : &fb.balls[j]};
           g = support_gap<D>(A, B, b.pose.position - a.pose.position, axes, false);
-          tighten_by_pulls<D>(pa.geometry.get(), ta, pb.geometry.get(), tb, request, size, near, g, fcl_queries_);
+          Gap<D> scaled{g.value * inv, g.normal};  // FCL's unit, and back
+          tighten_by_pulls<D>(pa.geometry.get(), ta, pb.geometry.get(), tb, request, size * inv, near * inv, scaled, fcl_queries_);
+          g = {scaled.value * unit, scaled.normal};
         }
       }
       if (g.value < best.value) best = g;

@@ -73,6 +73,9 @@ class NarrowPhase {
   struct FclShape;
   const FclShape& fcl_of(const ShapePtr<D>& s) const;
   Gap<D> fcl_gap(const Particle<D>& a, const Particle<D>& b) const;
+  /// FCL's length unit, a power of two: 1 unless the first pair FCL sees is far from unit size
+  /// (then about its size); fixed from then on, as the cached geometry is built in it.
+  double fcl_unit(double size) const;
   /// Two convex polygons (2D): the separating axes on overlap, the nearest points apart; exact
   /// to rounding, no FCL geometry built.
   Gap<D> polygon_gap(const Particle<D>& a, const FclShape& fa, const Particle<D>& b, const FclShape& fb) const;
@@ -95,6 +98,7 @@ class NarrowPhase {
   mutable std::vector<Memo> memo_;
   mutable std::unordered_map<const Shape<D>*, std::unique_ptr<FclShape>> cache_;
   mutable std::uint64_t fcl_queries_ = 0;
+  mutable double unit_ = 0;  ///< fcl_unit(); 0 until the first FCL query
   mutable std::vector<Vec<D>> axes_scratch_, world_a_, world_b_;
 };
 

@@ -14,6 +14,7 @@
 
 #include "contact/shape_validation.hpp"
 #include "core/geometry/box_container.hpp"
+#include "core/geometry/local_frame.hpp"
 #include "core/geometry/mesh_container.hpp"
 #include "core/geometry/polygon_container.hpp"
 #include "core/sampling/ks_test.hpp"
@@ -389,6 +390,68 @@ void expect_reproducible(const std::string& family, Where where) {
 TEST(ShapeFrontReproducible, SameSeedSamePackingEveryFamily) {
   for (const auto& [name, text] : kFamilies2) expect_reproducible<2>(name, Where::NonConvex);
   for (const auto& [name, text] : kFamilies3) expect_reproducible<3>(name, Where::Box);
+}
+
+// ---- far and scaled scenes --------------------------------------------------------------------
+
+/// The particles' YAML of a family with every size (and length) scaled by `s` (a power of two).
+std::string scaled_particles(const std::string& text, double s) {
+  char size[160];
+  std::snprintf(size, sizeof size, "    size: {distribution: uniform, min: %.17g, max: %.17g}\n", 0.25 * s, 0.4 * s);
+  std::string out = text;
+  for (std::size_t at = out.find(kSize); at != std::string::npos; at = out.find(kSize, at + 1)) out.replace(at, kSize.size(), size);
+  return out;
+}
+
+/// The same scene in a box shifted by 1e9 (its frame origin: the box's corner) and scaled by
+/// 2^60 and 2^-60 packs the same particles: positions, orientations and sizes bit for bit the
+/// reference's (shifted: in the local frame; scaled: times 2^k), and the same count; every
+/// scaled packing, brought back by 2^-k (exactly), passes the independent checks in the plain box.
+/// `fcl_scaled`: the family's contacts go through FCL distance queries (3D polyhedra beyond the
+/// separating axes, cylinders); FCL works in a power-of-two unit about the scene's size (libccd's
+/// tolerances are absolute: before that, cylinders at 2^-60 overlapped by 0.4 of their radius and
+/// passed validation), not the plain scene's unit, so such packings are valid with the same count
+/// but not bit for bit the plain one.
+template <int D>
+void expect_far_and_scaled_same(const std::string& family, bool fcl_scaled) {
+  const std::string& text = (D == 2 ? kFamilies2 : kFamilies3).at(family);
+  const std::uint64_t n = std::min<std::uint64_t>(count_for(D, family), 20);
+  const Vec<D> hi = Vec<D>::Constant(D == 2 ? 6.0 : 2.5);
+  PackSetup<D> plain;
+  plain.container = std::make_shared<fp::BoxContainer<D>>(Vec<D>::Zero(), hi);
+  plain.sd = box_distance<D>(Vec<D>::Zero(), hi);
+  plain.name = "plain box";
+  const PackRun<D> ref = pack_run<D>(text, plain, n, 11);
+  ASSERT_EQ(ref.res.packing.size(), n) << family;
+
+  const Vec<D> lo_far = Vec<D>::Constant(1e9), hi_far = lo_far + hi;
+  fp::Aabb<D> bounds;
+  bounds.extend(lo_far), bounds.extend(hi_far);
+  PackSetup<D> far;
+  const Vec<D> origin = fp::frame_origin<D>(bounds);
+  far.container = std::make_shared<fp::BoxContainer<D>>(lo_far, hi_far, origin);
+  const PackRun<D> shifted = pack_run<D>(text, far, n, 11);
+  EXPECT_EQ(shifted.res.packing.origin, origin) << family;
+  EXPECT_TRUE(bitwise_same<D>(ref.res.packing, shifted.res.packing)) << D << "D " << family << " shifted by 1e9";
+
+  for (const int k : {60, -60}) {
+    SCOPED_TRACE(std::to_string(D) + "D " + family + " scaled by 2^" + std::to_string(k));
+    const double s = std::ldexp(1.0, k);
+    PackSetup<D> big;
+    big.container = std::make_shared<fp::BoxContainer<D>>(Vec<D>::Zero(), Vec<D>(hi * s));
+    const PackRun<D> scaled = pack_run<D>(scaled_particles(text, s), big, n, 11);
+    PackRun<D> back = scaled;  // scaled back by 2^-k: exact
+    for (auto& p : back.res.packing.particles) p.pose.position /= s, p.size /= s, p.shape = p.shape->scaled(1 / s);
+    back.res.solid_measure /= std::pow(s, D);
+    back.templates = ref.templates;
+    check_packing<D>(back, plain, n);
+    if (!fcl_scaled) EXPECT_TRUE(bitwise_same<D>(ref.res.packing, back.res.packing)) << D << "D " << family << " scaled by 2^" << k;
+  }
+}
+
+TEST(ShapeFrontExtremes, FarAndScaledScenesPackTheSameParticles) {
+  for (const auto& [name, text] : kFamilies2) expect_far_and_scaled_same<2>(name, false);
+  for (const auto& [name, text] : kFamilies3) expect_far_and_scaled_same<3>(name, name == "polyhedron" || name == "cylinder");
 }
 
 // ---- distributions ---------------------------------------------------------------------------
