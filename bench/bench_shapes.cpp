@@ -46,8 +46,9 @@ ShapePtr<3> icosahedron() {
 }
 
 /// The gap of consecutive particles of `ps` (1,024 of them), one per iteration.
-void gap_loop(benchmark::State& state, const std::vector<Particle<3>>& ps) {
-  NarrowPhase<3> np;
+template <int D>
+void gap_loop(benchmark::State& state, const std::vector<Particle<D>>& ps) {
+  NarrowPhase<D> np;
   std::size_t k = 0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(np.gap(ps[k & 1023], ps[(k + 1) & 1023]));
@@ -134,14 +135,7 @@ std::vector<Particle<2>> scatter_hexagons(int n, double side, std::uint64_t seed
 /// Two convex polygons (separating axes on overlap, nearest points apart: no FCL); the square's
 /// side sets the overlapping share (15: most pairs overlap, 60: most are apart).
 void BM_GapPolygons(benchmark::State& state) {
-  const auto ps = scatter_hexagons(1024, static_cast<double>(state.range(0)) / 10.0, 4);
-  NarrowPhase<2> np;
-  std::size_t k = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(np.gap(ps[k & 1023], ps[(k + 1) & 1023]));
-    ++k;
-  }
-  state.SetItemsProcessed(state.iterations());
+  gap_loop(state, scatter_hexagons(1024, static_cast<double>(state.range(0)) / 10.0, 4));
 }
 BENCHMARK(BM_GapPolygons)->Arg(15)->Arg(60);
 
