@@ -461,7 +461,8 @@ bool NarrowPhase<D>::gap_exceeds(const Particle<D>& a, const Particle<D>& b, dou
         // an overlap or a touch, s > 0 apart, where the vertex-edge distance is exact (FCL's
         // GJK on the prisms cost 5 % of a polygon packing here).
         if (s <= 0 && d >= 0) return false;
-        // The vertices are in order (ConvexPolytopeShape<2>: edges (i, i + 1)).
+        // polytope_separation left the vertices, relative to a's position, in world_a_ and
+        // world_b_, in order (ConvexPolytopeShape<2>: edges (i, i + 1)).
         if (s > 0) return convex_polygon::apart_distance(world_a_, world_b_) > d;
       }
     }
