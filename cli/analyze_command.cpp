@@ -170,7 +170,7 @@ int analyze_shapes(const Scene& scene, const ShapePacking<D>& P, const AnalyzeCo
     solid += p.shape->measure();
     axes.push_back(p.pose.rotation.col(0));
   }
-  const ShapeValidation v = validate_shapes<D>(P, container, tol, requested);
+  const ValidationReport v = validate_shapes<D>(P, container, tol, requested);
   const double vf = solid / container.measure();
   const FabricTensor orientation = fabric_of_directions<D>(axes);
   const double order = orientation.eigenvalues.empty() ? 0.0 : (D * orientation.eigenvalues.back() - 1) / (D - 1);
@@ -186,7 +186,7 @@ int analyze_shapes(const Scene& scene, const ShapePacking<D>& P, const AnalyzeCo
     }
     b.text("],\n  \"volume_fraction_container\": ").json_number(vf);
     b.text(",\n  \"contact_tolerance\": ").json_number(tol);
-    b.text(",\n  \"mean_coordination\": ").json_number(v.mean_coordination);
+    b.text(",\n  \"mean_coordination\": ").json_number(v.mean_coordination());
     b.text(",\n  \"contacts\": ").integer(static_cast<std::int64_t>(v.contacts));
     b.text(",\n  \"wall_contacts\": ").integer(static_cast<std::int64_t>(v.wall_contacts));
     b.text(",\n  \"max_overlap_over_rmin\": ").json_number(v.max_overlap_rel);
@@ -206,13 +206,13 @@ int analyze_shapes(const Scene& scene, const ShapePacking<D>& P, const AnalyzeCo
       std::printf("%s %llu %s", t ? "," : "", static_cast<unsigned long long>(count[t]), scene.particle_templates[t].family.c_str());
     std::printf("\ncontainer            %s\n", container.describe().c_str());
     std::printf("%s container         %.6g (exact: the shapes' own measures)\n", D == 3 ? "VF" : "AF", vf);
-    std::printf("coordination z       %.4f, tol %.3g of the smaller circumscribed radius\n", v.mean_coordination, tol);
+    std::printf("coordination z       %.4f, tol %.3g of the smaller circumscribed radius\n", v.mean_coordination(), tol);
     std::printf("contacts             %llu between particles, %llu with walls\n", static_cast<unsigned long long>(v.contacts),
                 static_cast<unsigned long long>(v.wall_contacts));
     std::printf("max overlap / gap    %.3g / %.3g of the smaller circumscribed radius\n", v.max_overlap_rel, v.max_contact_gap_rel);
     std::printf("orientation order    S = %.4f (body x axes; 0 isotropic, 1 parallel), tensor eigenvalues", order);
     for (const double e : orientation.eigenvalues) std::printf(" %.4f", e);
-    std::printf("\nvalidate: %s\n", v.summary().c_str());
+    std::printf("\n%s\n", v.summary().c_str());
   }
   return 0;
 }

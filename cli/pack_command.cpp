@@ -4,7 +4,8 @@
 #include "cli/packing_input.hpp"
 #include "cli/pack_run_steps.hpp"
 #include "cli/run_record_start.hpp"
-#include "cli/shape_pack_command.hpp"
+#include "cli/shape_pack.hpp"
+#include "cli/sphere_pack.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -22,11 +23,7 @@
 #include "core/io/run_record.hpp"
 #include "core/io/scene_limits.hpp"
 #include "core/io/scene_yaml.hpp"
-#include "core/io/analysis_json.hpp"
-#include "core/metrics/packing_analysis.hpp"
-#include "front/pack.hpp"
 #include "shapes/io/shape_packing_writers.hpp"
-#include "frontpack/version.hpp"
 
 namespace fp {
 namespace {
@@ -68,48 +65,44 @@ void apply_overrides(Scene& scene, const PackCommandOptions& o) {
   check_output_paths(writes, scene_reads(scene, "argument SCENE"));
 }
 
-template <int D>
+/// One run for every kind of particle (`Kind`: SpherePack or ShapePack): pack, check (the one
+/// verdict), record, write every output or none, summarise; exit 3 when the check fails.
+template <int D, class Kind>
 int run(const Scene& scene, const PackCommandOptions& o) {
   const Container<D>& container = *scene.container<D>();
-  const PackResult<D> res = pack_with_progress(o.progress, [&](const ProgressFn& progress) { return pack<D>(scene, progress); });
-  const Packing<D>& P = res.packing;
+  const typename Kind::Result res =
+      pack_with_progress(o.progress, [&](const ProgressFn& progress) { return Kind::pack(scene, progress); });
+  const auto& P = res.packing;
+  const double n = static_cast<double>(P.size());
+  const double rate = res.seconds > 0 ? n / res.seconds : 0.0;
 
-  // Every figure of `frontpack analyze`, from the same code, the independent validation included.
-  const Activity analysing("analysing the packing of '" + scene.source_path + "'");
-  const auto t_metrics = Clock::now();
-  AnalysisOptions analysis_options;
-  analysis_options.contact_tolerance = scene.packer.contact_tolerance;
-  const PackingAnalysis a = analyze_packing<D>(P, &container, scene.radii.get(), analysis_options);
-  const ValidationReport& vr = *a.validation;
-  const ContactStats& cs = a.coordination;
-  const double metrics_seconds = since(t_metrics);
+  const auto t_check = Clock::now();
+  const PackCheck check = [&] {
+    const Activity checking("checking the packing of '" + scene.source_path + "'");
+    return Kind::check(scene, res);
+  }();
+  const double check_seconds = since(t_check);
+  const ValidationReport& v = check.validation;
 
   RunRecord rec = start_run_record<D>(scene, container, P.size());
-  rec.distribution_description = scene.radii->describe();
-  rec.timings = {{"pack", res.seconds}, {"metrics", metrics_seconds}};
-  rec.metrics = {{"volume_fraction_container", a.vf_container.vf.value},
-                 {"volume_fraction_core", a.vf_core.vf.value},
-                 {"volume_fraction_reference_sphere", a.vf_reference},
-                 {"reference_sphere_radius", a.reference_radius},
-                 {"contact_tolerance", a.contact_tolerance},
-                 {"mean_coordination", cs.mean_coordination},
-                 {"mean_coordination_with_walls", cs.mean_coordination_with_walls},
-                 {"rattler_fraction", P.empty() ? 0.0 : static_cast<double>(cs.rattlers) / P.size()},
-                 {"max_overlap_over_rmin", a.max_overlap_rel},
-                 {"max_overlap_over_smaller_radius", vr.max_overlap_rel},
-                 {"max_outside_over_r", vr.max_outside_rel},
-                 {"radii_statistic", vr.radii.statistic},
-                 {"radii_pvalue", vr.radii.p},
-                 {"particles_per_second", res.seconds > 0 ? P.size() / res.seconds : 0.0}};
-  const char* axis_names[] = {"x", "y", "z"};
-  for (int a_ = 0; a_ < D; ++a_)
-    rec.metrics.emplace_back(std::string("reference_sphere_center_") + axis_names[a_], a.reference_center[a_]);
-  rec.analysis_json = analysis_json(a);
+  rec.distribution_description = particles_description(scene);
+  rec.timings = {{"pack", res.seconds}, {check.timing_name, check_seconds}};
+  rec.metrics = {{"volume_fraction_container", check.volume_fraction},
+                 {"contact_tolerance", v.tolerance},
+                 {"mean_coordination", v.mean_coordination()},
+                 {"max_overlap_over_smaller_radius", v.max_overlap_rel},
+                 {"max_contact_gap_over_smaller_radius", v.max_contact_gap_rel},
+                 {"max_outside_over_r", v.max_outside_rel},
+                 {"particles_per_second", rate}};
+  rec.metrics.insert(rec.metrics.end(), check.metrics.begin(), check.metrics.end());
   rec.counters = front_counter_entries(res.counters);
-  const std::vector<std::pair<std::string, std::uint64_t>> extra = {
-      {"contacts", cs.contacts}, {"wall_contacts", cs.wall_contacts}, {"rattlers", cs.rattlers}, {"grid_bytes", res.grid_bytes}};
-  rec.counters.insert(rec.counters.end(), extra.begin(), extra.end());
-  rec.info = {{"stop_reason", to_string(res.stop)}, {"validation", vr.ok ? "ok" : "FAILED"}, {"radii_test", vr.radii.test}};
+  const std::vector<std::pair<std::string, std::uint64_t>> common = {
+      {"contacts", v.contacts}, {"wall_contacts", v.wall_contacts}, {"pairs_checked", v.pairs_checked}};
+  rec.counters.insert(rec.counters.end(), common.begin(), common.end());
+  rec.counters.insert(rec.counters.end(), check.counters.begin(), check.counters.end());
+  rec.info = {{"stop_reason", to_string(res.stop)}, {"validation", v.ok ? "ok" : "FAILED"}};
+  rec.info.insert(rec.info.end(), check.info.begin(), check.info.end());
+  rec.analysis_json = check.analysis_json;
 
   const double write_seconds = write_outputs(scene, o.record_path, rec, [&](OutputFormat format, const std::string& path) {
     write_packing<D>(format, path, P, rec);
@@ -117,19 +110,16 @@ int run(const Scene& scene, const PackCommandOptions& o) {
 
   if (!o.quiet) {
     print_run_header<D>(scene, container);
-    std::printf("  radii          %s\n", scene.radii->describe().c_str());
-    std::printf("  particles      %zu   (stop: %s)\n", P.size(), to_string(res.stop));
-    std::string table = "  " + a.summary();
-    for (std::size_t at = table.find('\n'); at != std::string::npos; at = table.find('\n', at + 3)) table.insert(at + 1, "  ");
-    std::printf("%s\n", table.c_str());
-    std::printf("  validation     %s\n", vr.ok ? "ok (every pair, every particle against the container, radii range and test)"
-                                                : "FAILED (see above)");
-    std::printf("  time           pack %.3f s (%.0f particles/s), metrics %.3f s, write %.3f s\n", res.seconds,
-                res.seconds > 0 ? P.size() / res.seconds : 0.0, metrics_seconds, write_seconds);
+    std::printf("  particles      %s\n", rec.distribution_description.c_str());
+    std::printf("  placed         %zu   (stop: %s)\n", P.size(), to_string(res.stop));
+    std::printf("%s", check.summary_lines.c_str());
+    std::printf("  validation     %s\n", v.one_line().c_str());
+    std::printf("  time           pack %.3f s (%.1f particles/s), %s %.3f s, write %.3f s\n", res.seconds, rate,
+                check.timing_name.c_str(), check_seconds, write_seconds);
     print_output_lines(scene, o.record_path);
   }
-  if (!vr.ok) {
-    std::fprintf(stderr, "frontpack: error: the packing failed validation:\n%s\n", vr.summary().c_str());
+  if (!v.ok) {
+    std::fprintf(stderr, "frontpack: error: the packing failed validation:\n%s\n", v.summary().c_str());
     return 3;
   }
   return 0;
@@ -153,8 +143,8 @@ int run_pack_command(const PackCommandOptions& o) {
   try {
     const Activity doing("packing scene '" + o.scene_path + "'");
     if (!scene.particle_templates.empty())  // non-spherical particles: the general front
-      return scene.dimension == 2 ? run_shape_pack<2>(scene, o) : run_shape_pack<3>(scene, o);
-    return scene.dimension == 2 ? run<2>(scene, o) : run<3>(scene, o);
+      return scene.dimension == 2 ? run<2, ShapePack<2>>(scene, o) : run<3, ShapePack<3>>(scene, o);
+    return scene.dimension == 2 ? run<2, SpherePack<2>>(scene, o) : run<3, SpherePack<3>>(scene, o);
   } catch (...) {
     return report_failure(1);
   }

@@ -51,6 +51,15 @@ inline std::vector<std::pair<std::string, std::uint64_t>> front_counter_entries(
           {"two_contact_placements", c.two_contact_placements}, {"contact_bodies_capped", c.contact_bodies_capped}};
 }
 
+/// What the record and the summaries call the particles: the radius law, or each template's
+/// family and size law.
+inline std::string particles_description(const Scene& scene) {
+  if (scene.particle_templates.empty()) return scene.radii->describe();
+  std::string d;
+  for (const ParticleTemplateSpec& t : scene.particle_templates) d += (d.empty() ? "" : "; ") + t.family + " " + t.size->describe();
+  return d;
+}
+
 /// The first two lines of the summary: what was run, and in which container.
 template <int D>
 void print_run_header(const Scene& scene, const Container<D>& container) {

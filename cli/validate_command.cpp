@@ -8,20 +8,22 @@
 
 #include "cli/failure_report.hpp"
 #include "cli/packing_input.hpp"
+#include "cli/run_record_start.hpp"
 #include "contact/shape_validation.hpp"
 #include "core/metrics/validate.hpp"
 
 namespace fp {
 namespace {
 
+/// The one verdict of `frontpack pack`, printed the same for every kind of particle: `r` comes
+/// from validate_packing (spheres) or validate_shapes (shapes), as in `pack`: same function, same
+/// tolerance, same size tests and level.
 template <int D>
-int validate(const Scene& scene, const Packing<D>& P, const ValidateCommandOptions& o) {
+int report(const Scene& scene, const ValidationReport& r, const ValidateCommandOptions& o) {
   const Container<D>& container = *scene.container<D>();
-  const double tol = o.tolerance >= 0 ? o.tolerance : scene.packer.contact_tolerance;
-  // The verdict of `frontpack pack`: same function, same tolerance, same radii test and level.
-  const ValidationReport r = validate_packing<D>(P, container, scene.radii.get(), tol, o.ks_alpha);
   if (!o.quiet) {
-    std::printf("frontpack validate   %s   against %s (%dD)\n", o.packing_path.c_str(), scene.source_path.c_str(), D);
+    std::printf("frontpack validate   %s   against %s (%dD%s)\n", o.packing_path.c_str(), scene.source_path.c_str(), D,
+                scene.particle_templates.empty() ? "" : ", particles of shapes");
     std::printf("  container      %s\n", container.describe().c_str());
     std::printf("  particles      %llu; %llu pairs checked\n", static_cast<unsigned long long>(r.particles),
                 static_cast<unsigned long long>(r.pairs_checked));
@@ -29,17 +31,30 @@ int validate(const Scene& scene, const Packing<D>& P, const ValidateCommandOptio
       std::printf("  result         FAILED: the packing holds no particles\n");
       return 3;
     }
-    std::printf("  overlaps       %llu beyond %.3g of the smaller radius   (max overlap %.3g of the smaller radius)\n",
-                static_cast<unsigned long long>(r.overlap_count), tol, r.max_overlap_rel);
-    std::printf("  outside        %llu   (max protrusion %.3g r)\n", static_cast<unsigned long long>(r.outside_count),
-                r.max_outside_rel);
-    std::printf("  radii          %llu out of range of %s; %s (fails below %.3g)\n",
-                static_cast<unsigned long long>(r.radius_count), scene.radii->describe().c_str(),
-                r.radii.describe().c_str(), o.ks_alpha);
+    std::printf("  overlaps       %llu beyond %.3g of the smaller %s   (max overlap %.3g of the smaller %s)\n",
+                static_cast<unsigned long long>(r.overlap_count), r.tolerance, r.unit_name.c_str(), r.max_overlap_rel,
+                r.unit_name.c_str());
+    std::printf("  outside        %llu   (max protrusion %.3g of the %s)\n", static_cast<unsigned long long>(r.outside_count),
+                r.max_outside_rel, r.unit_name.c_str());
+    std::printf("  contacts       %llu, %llu with the walls   (coordination %.3f; the largest |gap| %.3g)\n",
+                static_cast<unsigned long long>(r.contacts), static_cast<unsigned long long>(r.wall_contacts),
+                r.mean_coordination(), r.max_contact_gap_rel);
+    std::string tests;
+    for (std::size_t t = 0; t < r.sizes.size(); ++t)
+      if (r.sizes[t].computed()) tests += (r.sizes.size() == 1 ? "; " : "; template " + std::to_string(t) + ": ") + r.sizes[t].describe();
+    if (r.mix) {
+      char mix[160];
+      std::snprintf(mix, sizeof mix, "; mix of templates: chi-square X2 = %.4g (%d dof), p = %.3g", r.mix->statistic, r.mix->dof, r.mix->p);
+      tests += mix;
+    }
+    std::printf("  sizes          %llu out of range of %s%s (each test fails below %.3g)\n",
+                static_cast<unsigned long long>(r.radius_count), particles_description(scene).c_str(), tests.c_str(),
+                r.test_level());
     if (r.non_finite_count) std::printf("  non-finite     %llu\n", static_cast<unsigned long long>(r.non_finite_count));
     std::printf("  result         %s\n", r.ok ? "ok" : "FAILED");
     if (!r.worst.empty()) {
-      std::printf("  worst offenders (ids as in the file; overlaps relative to the smaller radius, others to r):\n");
+      std::printf("  worst offenders (ids as in the file; overlaps relative to the smaller %s, others to the particle's):\n",
+                  r.unit_name.c_str());
       for (const ValidationIssue& w : r.worst) std::printf("    %s\n", describe(w).c_str());
     }
   } else if (r.empty()) {
@@ -48,30 +63,16 @@ int validate(const Scene& scene, const Packing<D>& P, const ValidateCommandOptio
   return r.ok ? 0 : 3;
 }
 
-/// A packing of shapes: the verdict of `frontpack pack` for shapes (contact/shape_validation.hpp),
-/// same tolerance (the scene's gap_tolerance unless --tolerance), same size and mix tests.
 template <int D>
-int validate_shape_packing(const Scene& scene, const ShapePacking<D>& P, const ValidateCommandOptions& o) {
-  const Container<D>& container = *scene.container<D>();
+int validate(const Scene& scene, const Packing<D>& P, const ValidateCommandOptions& o) {
+  const double tol = o.tolerance >= 0 ? o.tolerance : scene.packer.contact_tolerance;
+  return report<D>(scene, validate_packing<D>(P, *scene.container<D>(), scene.radii.get(), tol, o.ks_alpha), o);
+}
+
+template <int D>
+int validate(const Scene& scene, const ShapePacking<D>& P, const ValidateCommandOptions& o) {
   const double tol = o.tolerance >= 0 ? o.tolerance : scene.packer.minimisation.gap_tolerance;
-  const std::vector<RequestedTemplate> requested = requested_templates(scene);
-  const ShapeValidation v = validate_shapes<D>(P, container, tol, requested, o.ks_alpha);
-  if (!o.quiet) {
-    std::printf("frontpack validate   %s   against %s (%dD, particles of shapes)\n", o.packing_path.c_str(),
-                scene.source_path.c_str(), D);
-    std::printf("  container      %s\n", container.describe().c_str());
-    std::printf("  particles      %zu; %llu pairs checked\n", P.size(), static_cast<unsigned long long>(v.pairs_checked));
-    std::printf("  overlaps       %llu beyond %.3g of the smaller circumscribed radius   (max overlap %.3g)\n",
-                static_cast<unsigned long long>(v.overlaps), tol, v.max_overlap_rel);
-    std::printf("  outside        %llu   (max protrusion %.3g of the circumscribed radius)\n",
-                static_cast<unsigned long long>(v.outside), v.max_outside_rel);
-    std::printf("  contacts       %llu, %llu with the walls   (coordination %.3f)\n", static_cast<unsigned long long>(v.contacts),
-                static_cast<unsigned long long>(v.wall_contacts), v.mean_coordination);
-    std::printf("  result         %s\n", v.summary().c_str());
-  } else if (!v.ok) {
-    std::fprintf(stderr, "frontpack: error: %s: %s\n", o.packing_path.c_str(), v.summary().c_str());
-  }
-  return v.ok ? 0 : 3;
+  return report<D>(scene, validate_shapes<D>(P, *scene.container<D>(), tol, requested_templates(scene), o.ks_alpha), o);
 }
 
 }  // namespace
@@ -86,8 +87,7 @@ int run_validate_command(const ValidateCommandOptions& o) {
   }
   try {
     const Activity doing("validating packing '" + o.packing_path + "'");
-    if (in.shapes)
-      return in.dimension == 2 ? validate_shape_packing<2>(*in.scene, in.shapes2, o) : validate_shape_packing<3>(*in.scene, in.shapes3, o);
+    if (in.shapes) return in.dimension == 2 ? validate<2>(*in.scene, in.shapes2, o) : validate<3>(*in.scene, in.shapes3, o);
     return in.dimension == 2 ? validate<2>(*in.scene, in.packing2, o) : validate<3>(*in.scene, in.packing3, o);
   } catch (...) {
     return report_failure(1);

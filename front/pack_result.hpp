@@ -30,13 +30,28 @@ struct FrontCounters {
   std::uint64_t contact_bodies_capped = 0;   ///< pair scans limited to the nearest contact bodies (a V of thousands)
 };
 
-template <int D>
+/// Where the contact solves of non-spherical particles went (all zero for spheres, whose analytic
+/// solver is inlined in the front and counted by FrontCounters::solves alone).
+struct SolverCounters {
+  std::uint64_t analytic_solves = 0;       ///< solves the registry sent to a closed-form solver (wrappers, spheres)
+  std::uint64_t minimisation_solves = 0;   ///< solves sent to the minimisation solver
+  std::uint64_t minimisations = 0;         ///< NLopt runs (two or more per minimisation solve)
+  std::uint64_t gap_evaluations = 0;       ///< gap-vector evaluations by the minimisation solver
+  std::uint64_t minima_rejected = 0;       ///< minima whose gaps stayed above the tolerance
+  std::uint64_t fcl_queries = 0;           ///< FCL distance queries of the narrow phase
+};
+
+/// What one run of the front returns, for spheres (`Particles` = Packing<D>, SoA) and for
+/// shapes (ShapePacking<D>, front/shape_front.hpp) alike.
+template <int D, class Particles = Packing<D>>
 struct PackResult {
-  Packing<D> packing;
+  Particles packing;
   StopReason stop = StopReason::FrontExhausted;
   FrontCounters counters;
-  double seconds = 0.0;          ///< packing time (excludes I/O)
-  double solid_measure = 0.0;    ///< sum of particle volumes (areas)
+  SolverCounters solver;
+  double seconds = 0.0;             ///< packing time (excludes I/O)
+  double solid_measure = 0.0;       ///< sum of particle volumes (areas)
+  double contact_tolerance = 0.0;   ///< contact / overlap allowance, relative to the smaller (circumscribed) radius
   std::size_t grid_bytes = 0;
   int grid_levels = 0;
 };

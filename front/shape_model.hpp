@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "contact/minimisation_solver.hpp"
 #include "contact/narrow_phase.hpp"
 #include "contact/shape_containment.hpp"
 #include "contact/solver_registry.hpp"
@@ -60,13 +61,17 @@ class ShapeModel {
 
   void attach(Result& res, const StopCriteria&) {
     res_ = &res;
-    res.gap_tolerance = tol_;
+    res.contact_tolerance = tol_;
     for (const auto& t : templates_) res.packing.template_names.push_back(t.family);
     res.packing.origin = container_.origin();
   }
   void finish(Result& res) const {
-    res.minimisation = static_cast<const MinimisationSolver<D>&>(registry_.default_solver()).stats();
-    res.fcl_queries = np_.fcl_queries();
+    const MinimisationStats& m = static_cast<const MinimisationSolver<D>&>(registry_.default_solver()).stats();
+    res.solver.minimisation_solves = m.solves;
+    res.solver.minimisations = m.minimisations;
+    res.solver.gap_evaluations = m.evaluations;
+    res.solver.minima_rejected = m.rejected_gap;
+    res.solver.fcl_queries = np_.fcl_queries();
   }
 
   Draft draw(Rng& rng) const { return draw_draft<D>(templates_, rng); }
@@ -202,7 +207,7 @@ class ShapeModel {
     if constexpr (D == 3) fixed_[2] = bodies_[static_cast<std::size_t>(j)];
     const std::span<const Body<D>> f(fixed_.data(), D);
     const ContactSolver<D>& solver = registry_.pick(f, mobile_);
-    if (&solver != &registry_.default_solver()) ++res_->analytic_solves;
+    if (&solver != &registry_.default_solver()) ++res_->solver.analytic_solves;
     return solver.solve(f, mobile_, out);
   }
   void two_contact(int, int, const Draft&, std::vector<Vec<D>>&) const {}

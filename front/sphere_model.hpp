@@ -49,6 +49,7 @@ class SphereModel {
 
   void attach(Result& res, const StopCriteria& stop) {
     res_ = &res;
+    res.contact_tolerance = tol_;
     res.packing.origin = container_.origin();
     if (stop.max_particles) res.packing.reserve(*stop.max_particles);
   }

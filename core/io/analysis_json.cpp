@@ -62,8 +62,11 @@ Json validation_json(const ValidationReport& v) {
               {"outside_count", v.outside_count},
               {"radius_count", v.radius_count},
               {"non_finite_count", v.non_finite_count},
+              {"contacts", v.contacts},
+              {"wall_contacts", v.wall_contacts},
+              {"max_contact_gap_rel", v.max_contact_gap_rel},
               {"worst", worst},
-              {"radii", radii_fit_fields(Json::object(), v.radii)}};
+              {"radii", radii_fit_fields(Json::object(), v.radii())}};
 }
 
 }  // namespace

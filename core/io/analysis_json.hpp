@@ -22,7 +22,8 @@
 //        std_error}, density, r: [], g: []}
 //   validation (null when not run) {ok, tolerance, radii_alpha, particles, pairs_checked,
 //        max_overlap_rel (over min(ri, rj)), max_outside_rel, overlap_count, outside_count,
-//        radius_count, non_finite_count, worst: [{kind, i, j, value_rel}], radii {test, n,
+//        radius_count, non_finite_count, contacts, wall_contacts, max_contact_gap_rel,
+//        worst: [{kind, i, j, value_rel}], radii {test, n,
 //        statistic, dof, p, off_support}}
 //   and, with include_timings, timings {name: seconds} (which differ from run to run).
 #include <string>

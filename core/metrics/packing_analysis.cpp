@@ -153,7 +153,7 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
     if (dist_or_null != nullptr) {
       a.distribution = dist_or_null->describe();
       if (a.validation) {
-        a.radii_fit = a.validation->radii;  // one test, one figure
+        a.radii_fit = a.validation->radii();  // one test, one figure
       } else {
         // The sample validate_packing tests: every ball with a finite centre and radius.
         std::vector<double> sample;

@@ -5,45 +5,10 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "core/metrics/cell_list.hpp"
 #include "core/metrics/containment_check.hpp"
-#include "core/metrics/contacts.hpp"
+#include "core/metrics/validate_particles.hpp"
 
 namespace fp {
-namespace {
-
-constexpr std::size_t kWorstKept = 20;
-
-// Strict "a is worse than b", total and deterministic: larger value first, then kind, ids.
-bool worse(const ValidationIssue& a, const ValidationIssue& b) {
-  if (a.value_rel != b.value_rel) return a.value_rel > b.value_rel;
-  if (a.kind != b.kind) return a.kind < b.kind;
-  if (a.i != b.i) return a.i < b.i;
-  return a.j < b.j;
-}
-
-// Keeps the kWorstKept worst issues in a heap whose front is the mildest kept one.
-class WorstIssues {
- public:
-  void add(ValidationIssue issue) {
-    if (heap_.size() == kWorstKept && !worse(issue, heap_.front())) return;
-    heap_.push_back(std::move(issue));
-    std::push_heap(heap_.begin(), heap_.end(), worse);
-    if (heap_.size() > kWorstKept) {
-      std::pop_heap(heap_.begin(), heap_.end(), worse);
-      heap_.pop_back();
-    }
-  }
-  std::vector<ValidationIssue> sorted() && {
-    std::sort(heap_.begin(), heap_.end(), worse);
-    return std::move(heap_);
-  }
-
- private:
-  std::vector<ValidationIssue> heap_;
-};
-
-}  // namespace
 
 std::string describe(const ValidationIssue& w) {
   char buf[160];
@@ -55,32 +20,103 @@ std::string describe(const ValidationIssue& w) {
   return buf;
 }
 
+const RadiiFit& ValidationReport::radii() const {
+  static const RadiiFit none;
+  return sizes.size() == 1 ? sizes[0] : none;
+}
+
+int ValidationReport::tests() const {
+  int n = mix ? 1 : 0;
+  for (const RadiiFit& f : sizes) n += f.computed() ? 1 : 0;
+  return n;
+}
+
+bool ValidationReport::sizes_ok() const {
+  const double level = test_level();
+  for (const RadiiFit& f : sizes)
+    if (!f.passes(level)) return false;
+  return !mix || !(mix->p < level);
+}
+
 std::string ValidationReport::summary() const {
   char buf[512];
   if (empty()) return "validate: FAILED: the packing holds no particles";
   std::snprintf(buf, sizeof buf,
-                "validate: %s: %llu particles, %llu pairs checked, tol %.3g; max overlap %.3g of the smaller radius, "
-                "max outside %.3g r",
+                "validate: %s: %llu particles, %llu pairs checked, tol %.3g; max overlap %.3g of the smaller %s, "
+                "max outside %.3g of the %s",
                 ok ? "OK" : "FAILED", static_cast<unsigned long long>(particles),
-                static_cast<unsigned long long>(pairs_checked), tolerance, max_overlap_rel, max_outside_rel);
+                static_cast<unsigned long long>(pairs_checked), tolerance, max_overlap_rel, unit_name.c_str(),
+                max_outside_rel, unit_name.c_str());
   std::string s = buf;
+  std::snprintf(buf, sizeof buf, "\n  contacts: %llu (coordination %.4g), %llu with the walls; largest contact gap %.3g",
+                static_cast<unsigned long long>(contacts), mean_coordination(), static_cast<unsigned long long>(wall_contacts),
+                max_contact_gap_rel);
+  s += buf;
   if (!worst.empty()) {
-    std::snprintf(buf, sizeof buf, "\n  issues: %llu overlaps, %llu outside, %llu radii out of range, %llu non-finite",
+    std::snprintf(buf, sizeof buf, "\n  issues: %llu overlaps, %llu outside, %llu sizes out of range, %llu non-finite",
                   static_cast<unsigned long long>(overlap_count), static_cast<unsigned long long>(outside_count),
                   static_cast<unsigned long long>(radius_count), static_cast<unsigned long long>(non_finite_count));
     s += buf;
     s += "\n  worst:";
     for (std::size_t k = 0; k < worst.size() && k < 5; ++k) s += (k ? ", " : " ") + describe(worst[k]);
   }
-  if (!radii.computed()) {
-    s += "\n  radii test: no distribution given";
-  } else {
-    std::snprintf(buf, sizeof buf, "\n  radii %s (fails below %.3g)%s", radii.describe().c_str(), radii_alpha,
-                  radii_ok() ? "" : ": FAILED");
+  if (tests() == 0) return s + "\n  size tests: no size law given";
+  const bool one = sizes.size() == 1 && !mix;
+  for (std::size_t t = 0; t < sizes.size(); ++t)
+    if (sizes[t].computed()) s += (one ? "\n  sizes " : "\n  sizes of template " + std::to_string(t) + ": ") + sizes[t].describe();
+  if (mix) {
+    std::snprintf(buf, sizeof buf, "\n  mix of templates: chi-square X2 = %.4g (%d dof), p = %.3g", mix->statistic, mix->dof, mix->p);
     s += buf;
   }
-  return s;
+  std::snprintf(buf, sizeof buf, "\n  each size test fails below %.3g%s", test_level(), sizes_ok() ? "" : ": FAILED");
+  return s + buf;
 }
+
+std::string ValidationReport::one_line() const {
+  if (empty()) return "FAILED: the packing holds no particles";
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "%s (every pair: %llu checked, %llu overlapping; every particle against the container: %llu outside; "
+                "max overlap %.3g and max outside %.3g of the %s, tolerance %.3g",
+                ok ? "ok" : "FAILED", static_cast<unsigned long long>(pairs_checked),
+                static_cast<unsigned long long>(overlap_count), static_cast<unsigned long long>(outside_count),
+                max_overlap_rel, max_outside_rel, unit_name.c_str(), tolerance);
+  std::string s = buf;
+  if (radius_count + non_finite_count)
+    s += "; " + std::to_string(radius_count) + " sizes out of range, " + std::to_string(non_finite_count) + " non-finite";
+  if (tests() == 0) return s + "; no size law to test)";
+  std::snprintf(buf, sizeof buf, "; %d size test%s at %.3g: %s)", tests(), tests() > 1 ? "s" : "", test_level(),
+                sizes_ok() ? "passed" : "FAILED");
+  return s + buf;
+}
+
+namespace {
+
+// Balls as validate_particles sees them: the radius is the length unit and the size; distances
+// to the container through ContainmentCheck's own geometry.
+template <int D>
+class SphereParticles {
+ public:
+  static constexpr const char* kSizeIssue = "radius_out_of_range";
+  static constexpr const char* kUnitName = "radius";
+
+  SphereParticles(const Packing<D>& packing, const Container<D>& container) : p_(packing), containment_(container) {}
+  std::size_t size() const { return p_.size(); }
+  const std::vector<Vec<D>>& centers() const { return p_.centers; }
+  const std::vector<double>& reach_radii() const { return p_.radii; }
+  bool finite(std::size_t i) const { return std::isfinite(p_.radii[i]) && p_.centers[i].allFinite(); }
+  double unit(std::size_t i) const { return p_.radii[i]; }
+  double overlap(std::size_t i, std::size_t j) const { return p_.radii[i] + p_.radii[j] - (p_.centers[i] - p_.centers[j]).norm(); }
+  double protrusion(std::size_t i, double unit) const { return containment_.signed_distance(p_.centers[i], unit) + p_.radii[i]; }
+  int template_of(std::size_t) const { return 0; }
+  double size_of(std::size_t i) const { return p_.radii[i]; }
+
+ private:
+  const Packing<D>& p_;
+  const ContainmentCheck<D> containment_;
+};
+
+}  // namespace
 
 template <int D>
 ValidationReport validate_packing(const Packing<D>& packing, const Container<D>& container,
@@ -96,62 +132,9 @@ ValidationReport validate_packing(const Packing<D>& packing, const Container<D>&
   if (packing.origin != container.origin())
     throw std::invalid_argument("validate_packing: the packing and the container are in different frames");
 
-  ValidationReport rep;
-  rep.tolerance = overlap_tol_rel;
-  rep.radii_alpha = radii_alpha;
-  rep.particles = packing.size();
-  WorstIssues worst;
-  const double r_unit = smallest_radius(packing);
-  // The length unit of a ball or pair: its (smaller) radius; r_min for a zero radius (already an issue).
-  auto scale = [r_unit](double r) { return r > 0.0 ? r : (r_unit > 0.0 ? r_unit : 1.0); };
-
-  // Per ball: finiteness, radius range, container (through the check's own geometry, not the
-  // container's code).
-  const ContainmentCheck<D> containment(container);
-  std::vector<double> finite_radii;
-  finite_radii.reserve(packing.size());
-  for (std::size_t n = 0; n < packing.size(); ++n) {
-    const auto i = static_cast<std::int64_t>(n);
-    const double r = packing.radii[n];
-    const Vec<D>& c = packing.centers[n];
-    if (!std::isfinite(r) || !c.allFinite()) {
-      ++rep.non_finite_count;
-      worst.add({"non_finite", i, -1, std::numeric_limits<double>::infinity()});
-      continue;
-    }
-    finite_radii.push_back(r);
-    const double excess = dist_or_null ? radius_excess(*dist_or_null, r) : (r > 0.0 ? 0.0 : 1.0);
-    if (dist_or_null ? excess > kRadiusSlack : excess > 0.0) {
-      ++rep.radius_count;
-      worst.add({"radius_out_of_range", i, -1, excess});
-    }
-    const double out = (containment.signed_distance(c, scale(r)) + r) / scale(r);
-    rep.max_outside_rel = std::max(rep.max_outside_rel, out);
-    if (out > overlap_tol_rel) {
-      ++rep.outside_count;
-      worst.add({"outside", i, -1, out});
-    }
-  }
-
-  // Every pair that can overlap (cell list over the finite, non-negative balls), with the
-  // packer's allowance: tol * min(ri, rj).
-  const CellList<D> cells(packing.centers, packing.radii, 0.0);
-  cells.for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
-    ++rep.pairs_checked;
-    const double d = (packing.centers[i] - packing.centers[j]).norm();
-    const double overlap = (packing.radii[i] + packing.radii[j] - d) / scale(std::min(packing.radii[i], packing.radii[j]));
-    rep.max_overlap_rel = std::max(rep.max_overlap_rel, overlap);
-    if (overlap > overlap_tol_rel) {
-      ++rep.overlap_count;
-      worst.add({"overlap", i, j, overlap});
-    }
-  });
-
-  if (dist_or_null) rep.radii = radii_fit(std::move(finite_radii), *dist_or_null);
-  rep.worst = std::move(worst).sorted();
-  rep.ok = !rep.empty() && rep.overlap_count + rep.outside_count + rep.radius_count + rep.non_finite_count == 0 &&
-           rep.radii_ok();
-  return rep;
+  std::vector<RequestedTemplate> requested;
+  if (dist_or_null) requested.push_back({dist_or_null, 1.0});
+  return validate_particles<D>(SphereParticles<D>(packing, container), overlap_tol_rel, requested, radii_alpha);
 }
 
 template ValidationReport validate_packing<2>(const Packing<2>&, const Container<2>&, const RadiusDistribution*, double,

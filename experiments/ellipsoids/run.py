@@ -31,8 +31,8 @@ with tempfile.TemporaryDirectory() as tmp:
                          'fraction': round(m['volume_fraction_container'], 4), 'seconds': round(d['timings']['pack'], 2),
                          'per_second': round(d['n'] / d['timings']['pack'], 1), 'solves': c['solves'],
                          'closed_form_solves': c['analytic_solves'], 'gap_evaluations': c['gap_evaluations'],
-                         'fcl_queries': c['fcl_queries'], 'max_contact_gap_over_rmin': m['max_contact_gap_over_rmin'],
-                         'max_overlap_over_rmin': m['max_overlap_over_rmin'], 'stop': d['info']['stop_reason'],
+                         'fcl_queries': c['fcl_queries'], 'max_contact_gap_over_rmin': m['max_contact_gap_over_smaller_radius'],
+                         'max_overlap_over_rmin': m['max_overlap_over_smaller_radius'], 'stop': d['info']['stop_reason'],
                          'validation': d['info']['validation']})
             print(rows[-1], flush=True)
 out = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'runs.csv')

@@ -254,7 +254,7 @@ def run(part, case, config, scene_path, seed, dim, capsule):
                n=n, repeats=len(reps), stop=r["info"]["stop_reason"], validation=r["info"]["validation"],
                algorithm=r["info"].get("minimisation_algorithm", ""),
                vf=m["volume_fraction_container"], coord=m["mean_coordination"],
-               max_overlap=m["max_overlap_over_rmin"], max_outside=m["max_outside_over_r"],
+               max_overlap=m["max_overlap_over_smaller_radius"], max_outside=m["max_outside_over_r"],
                pack_s=pack, pps=n / pack, ms_per_particle=1e3 * pack / n,
                solves=c["solves"], minimisations=c["minimisations"], gap_evaluations=c["gap_evaluations"],
                fcl_queries=c["fcl_queries"], radii_unplaced=c["radii_unplaced"],
@@ -442,7 +442,7 @@ def write_results(prov, elapsed, res, commit_line=None, measured=None):
         f"* every run: `flock {LOCK} /usr/bin/time -f '%e %M' frontpack pack SCENE --seed S -o X.csv --record X.json -q`; "
         "columns from the JSON run record: pack time `timings.pack` (one core), particles/s = N / pack time, "
         "VF = `metrics.volume_fraction_container`, coordination = `metrics.mean_coordination`, max overlap = "
-        "`metrics.max_overlap_over_rmin` (largest overlap / smaller circumscribed radius). A run whose pack time is "
+        "`metrics.max_overlap_over_smaller_radius` (largest overlap / smaller circumscribed radius). A run whose pack time is "
         f"under {REPEAT_BELOW_S:g} s is repeated ({REPEATS} runs) and the best pack time kept (identical packing).",
         f"* total run time of this script: {elapsed / 60:.1f} min, of which {FP_SECONDS[0] / 60:.1f} min inside frontpack; "
         f"raw rows in `runs.csv` ({len(ROWS)} runs); scenes in `scenes/` (exact files run); figures in `figures/`.",

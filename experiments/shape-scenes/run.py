@@ -44,7 +44,7 @@ def main():
             m, c = r["metrics"], r["counters"]
             rows.append([name, r["dimension"], f"{r['n']:,}", f"{m['volume_fraction_container']:.4f}",
                          f"{m['particles_per_second']:,.1f}", f"{m['mean_coordination']:.2f}",
-                         f"{m['max_overlap_over_rmin']:.1e}", f"{m['max_outside_over_r']:.1e}", r["info"]["validation"],
+                         f"{m['max_overlap_over_smaller_radius']:.1e}", f"{m['max_outside_over_r']:.1e}", r["info"]["validation"],
                          r["info"]["stop_reason"] + (f" (cap {CAP_SECONDS} s added)" if name in CAPPED else ""),
                          f"{c['solves'] / max(1, r['n']):,.0f}", f"{c['fcl_queries'] / max(1, r['n']):,.0f}"])
             print(rows[-1], flush=True)

@@ -122,7 +122,7 @@ def run_all():
                     m = r["metrics"]
                     row = {"case": name, "solver": solver, "seed": seed, "n": r["n"], "fraction": m["volume_fraction_container"],
                            "pack_s": r["timings"]["pack"], "rate": m["particles_per_second"],
-                           "contact_gap": m["max_contact_gap_over_rmin"], "overlap": m["max_overlap_over_rmin"],
+                           "contact_gap": m["max_contact_gap_over_smaller_radius"], "overlap": m["max_overlap_over_smaller_radius"],
                            "coordination": m["mean_coordination"], "stop": r["info"]["stop_reason"]}
                     print(row, flush=True)
                     with open(csv_path, "a", newline="") as f:

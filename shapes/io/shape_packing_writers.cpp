@@ -713,7 +713,7 @@ void check_shape_format(OutputFormat format, const std::vector<std::string>& fam
 }
 
 template <int D>
-void write_shape_packing(OutputFormat format, const std::string& path, const ShapePacking<D>& packing,
+void write_packing(OutputFormat format, const std::string& path, const ShapePacking<D>& packing,
                          const RunRecord& record) {
   std::vector<std::string> kinds;
   for (std::size_t i = 0; i < packing.size(); ++i) {
@@ -756,8 +756,8 @@ void write_shape_packing(OutputFormat format, const std::string& path, const Sha
   }
 }
 
-template void write_shape_packing<2>(OutputFormat, const std::string&, const ShapePacking<2>&, const RunRecord&);
-template void write_shape_packing<3>(OutputFormat, const std::string&, const ShapePacking<3>&, const RunRecord&);
+template void write_packing<2>(OutputFormat, const std::string&, const ShapePacking<2>&, const RunRecord&);
+template void write_packing<3>(OutputFormat, const std::string&, const ShapePacking<3>&, const RunRecord&);
 template void check_shape_format<2>(OutputFormat, const std::vector<std::string>&);
 template void check_shape_format<3>(OutputFormat, const std::vector<std::string>&);
 

@@ -1,6 +1,7 @@
 #pragma once
-// Writers of a packing of general shapes (shapes/particle.hpp) in the formats DEM users load.
-// The sphere fast path keeps core/io/packing_writers.hpp; these writers take any Shape<D>.
+// Writers of a packing of general shapes (shapes/particle.hpp) in the formats DEM users load:
+// write_packing for a ShapePacking, the overload of core/io/packing_writers.hpp's for spheres
+// (whose fast path needs no shape), so `pack` writes either kind with one call.
 //
 // Conventions shared by every format (the same as core/io/packing_writers.hpp):
 // * Numbers are printed in the shortest decimal form that reads back to the same double
@@ -73,7 +74,7 @@ inline constexpr int kShapeSurfaceResolution = D == 2 ? 24 : 12;
 /// Throws std::invalid_argument (naming the path, nothing written) if `format` cannot represent
 /// these particles, and std::runtime_error naming the path on any other failure.
 template <int D>
-void write_shape_packing(OutputFormat format, const std::string& path, const ShapePacking<D>& packing,
+void write_packing(OutputFormat format, const std::string& path, const ShapePacking<D>& packing,
                          const RunRecord& record);
 
 /// Throws std::invalid_argument with a clear message if `format` cannot represent particles of

@@ -57,7 +57,7 @@ TEST_F(CliAnalyze, PackingsOfShapesFromTheirJsonOutput) {
   ASSERT_EQ(run_frontpack(dir, "pack fixed.yaml -q -o fixed.json --record fixed-rec.json").exit_code, 0);
   const RunResult fixed = run_frontpack(dir, "analyze fixed.json --scene fixed.yaml --json fixed-a.json");
   ASSERT_EQ(fixed.exit_code, 0) << fixed.out << fixed.err;
-  for (const char* row : {"particles of shapes", "VF container", "coordination z", "orientation order", "validate: ok"})
+  for (const char* row : {"particles of shapes", "VF container", "coordination z", "orientation order", "validate: OK"})
     EXPECT_NE(fixed.out.find(row), std::string::npos) << row << " not in\n" << fixed.out;
   const std::string a = read_bytes(dir.work() / "fixed-a.json"), rec = read_bytes(dir.work() / "fixed-rec.json");
   EXPECT_NEAR(number_after(a, "\"orientation_order\": "), 1.0, 1e-12) << a;

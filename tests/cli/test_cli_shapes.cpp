@@ -159,9 +159,9 @@ TEST_P(CliShapes, EveryFrontLeverAppliesToShapes) {
 // wrappers' contacts are exact to rounding where the minimisation's stop at its tolerance.
 TEST(CliShapesSolver, ContactSolverChoice) {
   const std::string cases[][2] = {{"auto", "assert c['minimisations'] == 0 and c['analytic_solves'] == c['solves'] > 0, c; "
-                                           "assert d['metrics']['max_contact_gap_over_rmin'] < 1e-12, d['metrics']"},
+                                           "assert d['metrics']['max_contact_gap_over_smaller_radius'] < 1e-12, d['metrics']"},
                                   {"minimisation", "assert c['analytic_solves'] == 0 and c['minimisations'] > 0, c; "
-                                                   "assert d['metrics']['max_contact_gap_over_rmin'] < 1e-6, d['metrics']"}};
+                                                   "assert d['metrics']['max_contact_gap_over_smaller_radius'] < 1e-6, d['metrics']"}};
   for (const auto& [solver, check] : cases) {
     TempDir dir;
     fs::create_directories(dir.work() / "out");

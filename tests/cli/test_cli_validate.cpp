@@ -192,7 +192,9 @@ TEST_F(CliValidate, PackingsOfShapesFromTheirJsonOutput) {
   const RunResult bad = run_frontpack(dir, "validate moved.json --scene caps.yaml");
   EXPECT_EQ(bad.exit_code, 3) << bad.out << bad.err;
   EXPECT_NE(bad.out.find("FAILED"), std::string::npos) << bad.out;
-  EXPECT_NE(bad.out.find("pair 0-1)"), std::string::npos) << bad.out;  // the worst: the planted pair
+  const std::size_t worst = bad.out.find("worst offenders");  // the worst first: the planted pair
+  ASSERT_NE(worst, std::string::npos) << bad.out;
+  EXPECT_EQ(bad.out.find("    overlap 0-1: ", worst), bad.out.find('\n', worst) + 1) << bad.out;
 
   write_bytes(dir.work() / "far.yaml", scene("1000000000", "1000000000.2"));
   ASSERT_EQ(run_frontpack(dir, "pack far.yaml -q -o far.json").exit_code, 0);

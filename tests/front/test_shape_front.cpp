@@ -134,7 +134,7 @@ void check_packing(const PackRun<D>& run, const PackSetup<D>& setup, std::uint64
   SCOPED_TRACE(std::string(setup.name) + ", " + std::to_string(ps.size()) + " particles");
   ASSERT_EQ(ps.size(), expect_n) << "stop: " << fp::to_string(run.res.stop);
   EXPECT_EQ(run.res.stop, fp::StopReason::ParticleCount);
-  EXPECT_EQ(run.res.gap_tolerance, kTol);
+  EXPECT_EQ(run.res.contact_tolerance, kTol);
 
   // Sizes: within the template's range, the shape scaled by size * scale_per_size.
   double measure = 0;
@@ -163,10 +163,10 @@ void check_packing(const PackRun<D>& run, const PackSetup<D>& setup, std::uint64
   // The library's validation agrees.
   std::vector<fp::RequestedTemplate> requested;
   for (const auto& t : run.templates) requested.push_back({t.size.get(), t.fraction});
-  const fp::ShapeValidation v = fp::validate_shapes<D>(P, *setup.container, run.res.gap_tolerance, requested);
+  const fp::ValidationReport v = fp::validate_shapes<D>(P, *setup.container, run.res.contact_tolerance, requested);
   EXPECT_TRUE(v.ok) << v.summary();
-  EXPECT_EQ(v.overlaps, 0u);
-  EXPECT_EQ(v.outside, 0u);
+  EXPECT_EQ(v.overlap_count, 0u);
+  EXPECT_EQ(v.outside_count, 0u);
   EXPECT_LE(v.max_overlap_rel, kTol);
   EXPECT_LE(v.max_outside_rel, kTol);
 
@@ -177,8 +177,8 @@ void check_packing(const PackRun<D>& run, const PackSetup<D>& setup, std::uint64
   EXPECT_GE(c.candidates, c.rejected_overlap + c.rejected_container);
   EXPECT_GE(c.radii_drawn, ps.size());
   EXPECT_EQ(c.radii_drawn, ps.size() + c.radii_unplaced);
-  EXPECT_GT(run.res.minimisation.solves + run.res.analytic_solves, 0u);
-  EXPECT_EQ(c.solves, run.res.minimisation.solves + run.res.analytic_solves);
+  EXPECT_GT(run.res.solver.minimisation_solves + run.res.solver.analytic_solves, 0u);
+  EXPECT_EQ(c.solves, run.res.solver.minimisation_solves + run.res.solver.analytic_solves);
   std::size_t loose = 0, wall_touch = 0, particle_touch = 0;
   for (std::size_t i = 0; i < ps.size(); ++i) {
     const bool touches_particle = ov.nearest_gap_rel[i] <= kTouchTol;
@@ -193,9 +193,9 @@ void check_packing(const PackRun<D>& run, const PackSetup<D>& setup, std::uint64
   std::printf("  [%s] %zu particles in %.3f s: %llu solves (%llu analytic), %llu minimisations, %llu FCL queries; "
               "max overlap %.3g (validation %.3g; cylinder pairs' loose bound %.3g), max outside %.3g, %zu touching a wall, %zu pairs checked\n",
               setup.name, ps.size(), run.seconds, static_cast<unsigned long long>(c.solves),
-              static_cast<unsigned long long>(run.res.analytic_solves),
-              static_cast<unsigned long long>(run.res.minimisation.minimisations),
-              static_cast<unsigned long long>(run.res.fcl_queries), ov.max_overlap_rel, v.max_overlap_rel,
+              static_cast<unsigned long long>(run.res.solver.analytic_solves),
+              static_cast<unsigned long long>(run.res.solver.minimisations),
+              static_cast<unsigned long long>(run.res.solver.fcl_queries), ov.max_overlap_rel, v.max_overlap_rel,
               ov.max_loose_overlap_rel, in.max_outside_rel, wall_touch, ov.pairs);
 }
 
@@ -383,7 +383,7 @@ void expect_reproducible(const std::string& family, Where where) {
   ASSERT_EQ(a.res.packing.size(), n);
   EXPECT_TRUE(bitwise_same<D>(a.res.packing, b.res.packing));
   EXPECT_EQ(a.res.counters.solves, b.res.counters.solves);
-  EXPECT_EQ(a.res.fcl_queries, b.res.fcl_queries);
+  EXPECT_EQ(a.res.solver.fcl_queries, b.res.solver.fcl_queries);
   EXPECT_FALSE(bitwise_same<D>(a.res.packing, c.res.packing));
 }
 

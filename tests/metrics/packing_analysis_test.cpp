@@ -105,8 +105,8 @@ TEST(PackingAnalysis, RadiiAgainstTheRequestedDistribution) {
   EXPECT_EQ(a.distribution, dist.describe());
   EXPECT_EQ(a.radii_fit.n, p.size());
   EXPECT_EQ(a.radii_fit.test, "K-S");
-  EXPECT_EQ(a.radii_fit.statistic, a.validation->radii.statistic);
-  EXPECT_EQ(a.radii_fit.p, a.validation->radii.p);
+  EXPECT_EQ(a.radii_fit.statistic, a.validation->radii().statistic);
+  EXPECT_EQ(a.radii_fit.p, a.validation->radii().p);
   EXPECT_GT(a.radii_fit.p, 0.01);
   // Without the validation the analysis runs the same test itself.
   o.validate = false;
@@ -169,7 +169,7 @@ TEST(PackingAnalysis, PacksVerdictIsValidatesAtTheSmallerRadius) {
     EXPECT_EQ(a.validation->max_overlap_rel, v.max_overlap_rel);
     EXPECT_NEAR(v.max_overlap_rel, of_smaller, 1e-13);
     EXPECT_EQ(a.radii_fit.test, "chi-square");
-    EXPECT_TRUE(a.validation->radii_ok());
+    EXPECT_TRUE(a.validation->sizes_ok());
   }
 }
 

@@ -29,9 +29,9 @@ TEST(Validate, CleanRandomPackingPasses) {
   EXPECT_TRUE(rep.worst.empty());
   EXPECT_EQ(rep.max_overlap_rel, 0.0);
   EXPECT_EQ(rep.max_outside_rel, 0.0);
-  EXPECT_EQ(rep.radii.test, "K-S");
-  EXPECT_GT(rep.radii.p, 0.001);
-  EXPECT_LT(rep.radii.statistic, 0.03);
+  EXPECT_EQ(rep.radii().test, "K-S");
+  EXPECT_GT(rep.radii().p, 0.001);
+  EXPECT_LT(rep.radii().statistic, 0.03);
   EXPECT_NE(rep.summary().find("validate: OK"), std::string::npos);
 }
 
@@ -108,11 +108,11 @@ TEST(Validate, RadiiAgainstTheDistribution) {
   const UniformRadius wider(0.5, 1.3);
   const ValidationReport ks = validate_packing<3>(clean_packing(), clean_box(), &wider);
   EXPECT_FALSE(ks.ok);
-  EXPECT_FALSE(ks.radii_ok());
+  EXPECT_FALSE(ks.sizes_ok());
   EXPECT_TRUE(ks.worst.empty());  // nothing else is wrong
-  EXPECT_EQ(ks.radii.test, "K-S");
-  EXPECT_GT(ks.radii.statistic, 0.25);
-  EXPECT_LT(ks.radii.p, 1e-10);
+  EXPECT_EQ(ks.radii().test, "K-S");
+  EXPECT_GT(ks.radii().statistic, 0.25);
+  EXPECT_LT(ks.radii().p, 1e-10);
   EXPECT_NE(ks.summary().find("FAILED"), std::string::npos) << ks.summary();
   EXPECT_FALSE(validate_packing<3>(clean_packing(), clean_box(), &wider, 1e-9, 1e-10).ok);
   EXPECT_TRUE(validate_packing<3>(clean_packing(), clean_box(), &wider, 1e-9, 0.0).ok);  // level 0: never rejects
@@ -121,8 +121,8 @@ TEST(Validate, RadiiAgainstTheDistribution) {
   q.radii[3] = 0.0;
   const ValidationReport none = validate_packing<3>(q, clean_box(), nullptr);
   EXPECT_EQ(none.radius_count, 1u);
-  EXPECT_FALSE(none.radii.computed());
-  EXPECT_TRUE(std::isnan(none.radii.statistic));
+  EXPECT_FALSE(none.radii().computed());
+  EXPECT_TRUE(std::isnan(none.radii().statistic));
 }
 
 // The issue's case: a pair overlapping by 1.27e-9 r_min is 8.0e-10 of its smaller radius, which
@@ -158,9 +158,9 @@ TEST(Validate, ConstantRadiiPassOnlyWhenEveryRadiusIsTheValue) {
   const ConstantRadius dist(0.5);
   const ValidationReport rep = validate_packing<3>(lat.packing, box, &dist);
   EXPECT_TRUE(rep.ok) << rep.summary();
-  EXPECT_EQ(rep.radii.test, "constant");
-  EXPECT_EQ(rep.radii.p, 1.0);
-  EXPECT_EQ(rep.radii.statistic, 0.0);
+  EXPECT_EQ(rep.radii().test, "constant");
+  EXPECT_EQ(rep.radii().p, 1.0);
+  EXPECT_EQ(rep.radii().statistic, 0.0);
   lat.packing.radii[17] = 0.5 * (1 - 1e-13);  // within the slack
   EXPECT_TRUE(validate_packing<3>(lat.packing, box, &dist).ok);
   lat.packing.radii[17] = 0.5 * (1 - 1e-9);  // a different radius: named, and the test fails
@@ -171,8 +171,8 @@ TEST(Validate, ConstantRadiiPassOnlyWhenEveryRadiusIsTheValue) {
   EXPECT_EQ(off.worst[0].kind, "radius_out_of_range");
   EXPECT_EQ(off.worst[0].i, 17);
   EXPECT_NEAR(off.worst[0].value_rel, 1e-9, 1e-15);
-  EXPECT_EQ(off.radii.off_support, 1u);
-  EXPECT_EQ(off.radii.p, 0.0);
+  EXPECT_EQ(off.radii().off_support, 1u);
+  EXPECT_EQ(off.radii().p, 0.0);
 }
 
 // A discrete law: chi-square on the counts per value. The issue's 332/350 mix of a 50/50 law
@@ -189,14 +189,14 @@ TEST(Validate, DiscreteRadiiAreTestedOnTheirCounts) {
   const BoxContainer<3> box(Vec3::Zero(), Vec3::Constant(32.0));
   const ValidationReport even = validate_packing<3>(mix(332, 350), box, &dist);
   EXPECT_TRUE(even.ok) << even.summary();
-  EXPECT_EQ(even.radii.test, "chi-square");
-  EXPECT_EQ(even.radii.dof, 1);
-  EXPECT_NEAR(even.radii.statistic, 2.0 * 81.0 / 341.0, 1e-12);
-  EXPECT_NEAR(even.radii.p, 0.4906, 1e-4);
+  EXPECT_EQ(even.radii().test, "chi-square");
+  EXPECT_EQ(even.radii().dof, 1);
+  EXPECT_NEAR(even.radii().statistic, 2.0 * 81.0 / 341.0, 1e-12);
+  EXPECT_NEAR(even.radii().p, 0.4906, 1e-4);
   const ValidationReport skewed = validate_packing<3>(mix(260, 422), box, &dist);
   EXPECT_FALSE(skewed.ok);
   EXPECT_TRUE(skewed.worst.empty());
-  EXPECT_LT(skewed.radii.p, 1e-9);
+  EXPECT_LT(skewed.radii().p, 1e-9);
   auto between = mix(332, 350);
   between.radii[5] = 0.45;
   const ValidationReport off = validate_packing<3>(between, box, &dist);
@@ -205,7 +205,7 @@ TEST(Validate, DiscreteRadiiAreTestedOnTheirCounts) {
   ASSERT_FALSE(off.worst.empty());
   EXPECT_EQ(off.worst[0].i, 5);
   EXPECT_NEAR(off.worst[0].value_rel, 0.05 / 0.4, 1e-12);  // to the nearest value, 0.4
-  EXPECT_EQ(off.radii.p, 0.0);
+  EXPECT_EQ(off.radii().p, 0.0);
 }
 
 TEST(Validate, NonFiniteBallsAreIssuesAndTheRestIsStillChecked) {

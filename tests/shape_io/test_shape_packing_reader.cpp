@@ -72,7 +72,7 @@ void round_trip(const Vec<D>& origin) {
   RunRecord rec;
   rec.dimension = D;
   const std::string path = dir.file("p.json");
-  write_shape_packing<D>(OutputFormat::Json, path, p, rec);
+  write_packing<D>(OutputFormat::Json, path, p, rec);
   const std::string text = slurp(path);
   ASSERT_TRUE(is_shape_packing_json(text));
   const ShapePacking<D> q = read_shape_packing_json<D>(text, path, origin);

@@ -338,13 +338,13 @@ TEST(ShapeIo, WritingAnUnsupportedFormatThrowsAndWritesNothing) {
   for (const OutputFormat f : {OutputFormat::Yade, OutputFormat::Lammps}) {
     const std::string path = dir.file(name_for(f, "x"));
     try {
-      write_shape_packing<3>(f, path, p3, sample_record(3));
+      write_packing<3>(f, path, p3, sample_record(3));
       ADD_FAILURE() << "no error";
     } catch (const std::invalid_argument& e) {
       EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
       EXPECT_NE(std::string(e.what()).find("'spherocylinder'"), std::string::npos) << e.what();
     }
-    EXPECT_THROW(write_shape_packing<2>(f, path, p2, sample_record(2)), std::invalid_argument);
+    EXPECT_THROW(write_packing<2>(f, path, p2, sample_record(2)), std::invalid_argument);
   }
   EXPECT_TRUE(dir.entries().empty());
 }
@@ -364,7 +364,7 @@ void check_capsule_csv() {
   TempDir dir;
   const auto p = capsules<D>(300, 10 + D);
   const std::string path = dir.file("c.csv");
-  write_shape_packing<D>(OutputFormat::Csv, path, p, sample_record(D));
+  write_packing<D>(OutputFormat::Csv, path, p, sample_record(D));
   const auto lines = lines_of(slurp(path));
   ASSERT_EQ(lines.size(), p.size() + 1);
   EXPECT_EQ(lines[0], D == 3 ? "id,shape_id,ax,ay,az,bx,by,bz,r" : "id,shape_id,ax,ay,bx,by,r");
@@ -401,7 +401,7 @@ void check_generic_csv() {
   TempDir dir;
   const auto p = mixed<D>(60, 20 + D);
   const std::string path = dir.file("m.csv");
-  write_shape_packing<D>(OutputFormat::Csv, path, p, sample_record(D));
+  write_packing<D>(OutputFormat::Csv, path, p, sample_record(D));
   const auto lines = lines_of(slurp(path));
   ASSERT_EQ(lines.size(), p.size() + 1);
   EXPECT_EQ(lines[0], D == 3 ? "id,shape_id,kind,x,y,z,qw,qx,qy,qz,size,bounding_radius"
@@ -437,7 +437,7 @@ void check_json() {
   TempDir dir;
   const auto p = mixed<D>(30, 30 + D);
   const std::string path = dir.file("m.json");
-  write_shape_packing<D>(OutputFormat::Json, path, p, sample_record(D));
+  write_packing<D>(OutputFormat::Json, path, p, sample_record(D));
   const std::string result = dir.file("result.txt");
   ASSERT_EQ(run_python(dir,
                        "import json, sys\n"
@@ -519,7 +519,7 @@ TEST(ShapeIo, JsonParsesWithPythonAndIsExact2D) { check_json<2>(); }
 TEST(ShapeIo, EmptyPackingWritesValidFiles) {
   TempDir dir;
   ShapePacking<3> empty;
-  for (const OutputFormat f : kAllFormats) write_shape_packing<3>(f, dir.file(name_for(f, "e")), empty, RunRecord{});
+  for (const OutputFormat f : kAllFormats) write_packing<3>(f, dir.file(name_for(f, "e")), empty, RunRecord{});
   EXPECT_EQ(slurp(dir.file("e.csv")), "id,shape_id,kind,x,y,z,qw,qx,qy,qz,size,bounding_radius\n");
   if (python_has("json")) {
     EXPECT_EQ(run_python(dir,
@@ -556,7 +556,7 @@ void check_vtu() {
   TempDir dir;
   const auto p = mixed<D>(12, 40 + D);
   const std::string path = dir.file("m.vtu");
-  write_shape_packing<D>(OutputFormat::Vtu, path, p, sample_record(D));
+  write_packing<D>(OutputFormat::Vtu, path, p, sample_record(D));
   EXPECT_EQ(dir.entries(), (std::vector<std::string>{"m.surfaces.vtu", "m.vtu"}));
   const std::string result = dir.file("result.txt");
   ASSERT_EQ(run_python(dir,
@@ -708,7 +708,7 @@ void check_yade() {
   TempDir dir;
   const auto p = balls_and_clusters<D>(40, 50 + D);
   const std::string path = dir.file("c.txt");
-  write_shape_packing<D>(OutputFormat::Yade, path, p, sample_record(D));
+  write_packing<D>(OutputFormat::Yade, path, p, sample_record(D));
   const auto lines = lines_of(slurp(path));
   ASSERT_GE(lines.size(), 2u);
   EXPECT_EQ(lines[0], "#format x_y_z_r_clumpId");
@@ -737,7 +737,7 @@ void check_lammps() {
   TempDir dir;
   const auto p = balls_and_clusters<D>(40, 60 + D);
   const std::string path = dir.file("c.data");
-  write_shape_packing<D>(OutputFormat::Lammps, path, p, sample_record(D));
+  write_packing<D>(OutputFormat::Lammps, path, p, sample_record(D));
   EXPECT_EQ(dir.entries(), (std::vector<std::string>{"c.data", "c.multisphere.txt"}));
 
   // The data file: the member balls, exactly, readable by frontpack's own LAMMPS reader.
@@ -810,7 +810,7 @@ TEST(ShapeIo, LammpsDataAndMultisphereListing2D) { check_lammps<2>(); }
 template <int D>
 void write_all(const TempDir& dir, const std::string& stem, std::uint64_t seed) {
   for (const OutputFormat f : kAllFormats)
-    write_shape_packing<D>(f, dir.file(name_for(f, stem)), balls_and_clusters<D>(25, seed), sample_record(D));
+    write_packing<D>(f, dir.file(name_for(f, stem)), balls_and_clusters<D>(25, seed), sample_record(D));
 }
 
 TEST(ShapeIo, EveryFormatIsWrittenInBothDimensionsAndIsDeterministic) {
@@ -836,7 +836,7 @@ TEST(ShapeIo, MissingFolderThrowsNamingThePathAndLeavesNothing) {
   for (const OutputFormat f : kAllFormats) {
     const std::string path = dir.file("missing/" + name_for(f, "x"));
     try {
-      write_shape_packing<3>(f, path, p, sample_record(3));
+      write_packing<3>(f, path, p, sample_record(3));
       ADD_FAILURE() << "no error for " << path;
     } catch (const std::runtime_error& e) {
       EXPECT_NE(std::string(e.what()).find("'" + path + "'"), std::string::npos) << e.what();
@@ -855,7 +855,7 @@ TEST(ShapeIo, AFailingCompanionLeavesNoFileAndKeepsTheOldOne) {
     // A folder where the companion should go: the main file must not appear either.
     std::filesystem::create_directory(companion);
     try {
-      write_shape_packing<3>(f, path, p, sample_record(3));
+      write_packing<3>(f, path, p, sample_record(3));
       ADD_FAILURE() << "no error";
     } catch (const std::runtime_error& e) {
       EXPECT_NE(std::string(e.what()).find("'" + path + "'"), std::string::npos) << e.what();
@@ -864,11 +864,11 @@ TEST(ShapeIo, AFailingCompanionLeavesNoFileAndKeepsTheOldOne) {
     EXPECT_EQ(dir.entries(), std::vector<std::string>{std::filesystem::path(companion).filename().string()});
     // An existing pair is kept as it was when the next write fails.
     std::filesystem::remove(companion);
-    write_shape_packing<3>(f, path, p, sample_record(3));
+    write_packing<3>(f, path, p, sample_record(3));
     const std::string before = slurp(path);
     std::filesystem::remove(companion);
     std::filesystem::create_directory(companion);
-    EXPECT_THROW(write_shape_packing<3>(f, path, balls_and_clusters<3>(9, 5), sample_record(3)), std::runtime_error);
+    EXPECT_THROW(write_packing<3>(f, path, balls_and_clusters<3>(9, 5), sample_record(3)), std::runtime_error);
     EXPECT_EQ(slurp(path), before);
     EXPECT_EQ(dir.entries().size(), 2u);  // the old main file and the folder: no temporaries
     std::filesystem::remove_all(dir.path());
@@ -886,7 +886,7 @@ TEST(ShapeIo, ReadOnlyFolderThrowsAndLeavesNothing) {
   for (const OutputFormat f : {OutputFormat::Vtu, OutputFormat::Csv, OutputFormat::Json}) {
     const std::string path = ro + "/" + name_for(f, "x");
     try {
-      write_shape_packing<2>(f, path, p, sample_record(2));
+      write_packing<2>(f, path, p, sample_record(2));
       ADD_FAILURE() << "no error";
     } catch (const std::runtime_error& e) {
       EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();

@@ -1,0 +1,69 @@
+#include "cli/shape_pack.hpp"
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "contact/shape_validation.hpp"
+#include "core/io/output_format.hpp"
+#include "core/io/scene_limits.hpp"
+#include "front/pack_shapes_scene.hpp"
+#include "shapes/io/shape_packing_writers.hpp"
+
+namespace fp {
+namespace {
+
+template <int D>
+void check_in(const Scene& scene) {
+  const std::vector<ShapeTemplate<D>> templates = resolve_templates<D>(scene);
+  std::vector<std::string> families;
+  for (const ShapeTemplate<D>& t : templates) families.push_back(t.prototype.shape->kind());
+  for (const OutputSpec& out : scene.outputs) check_shape_format<D>(parse_output_format(out.format), families);
+  check_run_limits(scene, estimate_run_demand(scene, mean_measure<D>(templates)), available_memory());
+}
+
+}  // namespace
+
+void check_shape_scene(const Scene& scene) {
+  if (scene.dimension == 2) check_in<2>(scene);
+  else check_in<3>(scene);
+}
+
+template <int D>
+typename ShapePack<D>::Result ShapePack<D>::pack(const Scene& scene, const ProgressFn& progress) {
+  return pack_shape_scene<D>(scene, progress);
+}
+
+template <int D>
+PackCheck ShapePack<D>::check(const Scene& scene, const Result& res) {
+  const Container<D>& container = *scene.container<D>();
+  PackCheck c;
+  c.validation = validate_shapes<D>(res.packing, container, res.contact_tolerance, requested_templates(scene));
+  c.volume_fraction = res.solid_measure / container.measure();
+  c.timing_name = "validation";
+  const SolverCounters& s = res.solver;
+  c.counters = {{"analytic_solves", s.analytic_solves}, {"minimisations", s.minimisations},
+                {"gap_evaluations", s.gap_evaluations}, {"minima_rejected", s.minima_rejected},
+                {"fcl_queries", s.fcl_queries}};
+  c.info = {{"minimisation_algorithm", scene.packer.minimisation.algorithm},
+            {"contact_solver", scene.packer.contact_solver == ContactSolverChoice::Auto ? "auto" : "minimisation"}};
+  const ValidationReport& v = c.validation;
+  char buf[640];
+  std::snprintf(buf, sizeof buf,
+                "  %s     %.4f of the container\n"
+                "  coordination   %.3f   (contacts: |gap| <= %.3g x smaller circumscribed radius; the largest: %.2g)\n"
+                "  solver         %llu solves: %llu in closed form (wrappers, spheres), the others by minimisation (%s): "
+                "%llu minimisations, %llu gap evaluations; %llu FCL queries\n",
+                D == 3 ? "volume fraction" : "area fraction  ", c.volume_fraction, v.mean_coordination(), v.tolerance,
+                v.max_contact_gap_rel, static_cast<unsigned long long>(res.counters.solves),
+                static_cast<unsigned long long>(s.analytic_solves), scene.packer.minimisation.algorithm.c_str(),
+                static_cast<unsigned long long>(s.minimisations), static_cast<unsigned long long>(s.gap_evaluations),
+                static_cast<unsigned long long>(s.fcl_queries));
+  c.summary_lines = buf;
+  return c;
+}
+
+template struct ShapePack<2>;
+template struct ShapePack<3>;
+
+}  // namespace fp

@@ -1,0 +1,166 @@
+#pragma once
+// The one verdict of every packing, spheres and shapes alike: validate_packing (spheres,
+// validate.hpp) and validate_shapes (contact/shape_validation.hpp) are this function with their
+// own geometry. What is checked, and how it is counted, exists once:
+//  * every particle: finite, its size within its law's range, inside the container up to
+//    tol * its length unit (the radius; a shape's circumscribed radius);
+//  * every pair whose reach boxes meet (CellList: this file's own broad phase, never the
+//    packer's grid): an overlap beyond tol * the smaller length unit; |gap| <= that is a contact;
+//  * the sizes of each template against its law (radii_fit.hpp) and, with two templates or
+//    more, the counts per template against the requested shares (chi-square); the tests share
+//    the level alpha (Bonferroni), so a correct packing fails with probability below alpha;
+//  * an empty packing fails.
+//
+// `Particles` supplies the geometry (the public members of SphereParticles in validate.cpp are
+// the whole interface):
+//   size(), centers(), reach_radii()   the balls the broad phase indexes (non-finite ones left out)
+//   finite(i)                          position, size and length unit finite
+//   unit(i)                            the length unit (may be <= 0 for a broken sphere: reported)
+//   overlap(i, j)                      penetration depth, > 0 when the pair overlaps (absolute)
+//   protrusion(i, u)                   how far i reaches beyond the boundary, <= 0 inside (absolute;
+//                                      u: its length unit, as the engine scales it)
+//   template_of(i), size_of(i)         the template id and the size drawn from its law
+//   kSizeIssue, kUnitName              the kind of a size out of range ("radius_out_of_range"),
+//                                      the name of the length unit ("radius")
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/metrics/cell_list.hpp"
+#include "core/metrics/validate.hpp"
+#include "core/sampling/chi_square_test.hpp"
+
+namespace fp {
+namespace validation_detail {
+
+inline constexpr std::size_t kWorstKept = 20;
+
+// Strict "a is worse than b", total and deterministic: larger value first, then kind, ids.
+inline bool worse(const ValidationIssue& a, const ValidationIssue& b) {
+  if (a.value_rel != b.value_rel) return a.value_rel > b.value_rel;
+  if (a.kind != b.kind) return a.kind < b.kind;
+  if (a.i != b.i) return a.i < b.i;
+  return a.j < b.j;
+}
+
+// Keeps the kWorstKept worst issues in a heap whose front is the mildest kept one.
+class WorstIssues {
+ public:
+  void add(ValidationIssue issue) {
+    if (heap_.size() == kWorstKept && !worse(issue, heap_.front())) return;
+    heap_.push_back(std::move(issue));
+    std::push_heap(heap_.begin(), heap_.end(), worse);
+    if (heap_.size() > kWorstKept) {
+      std::pop_heap(heap_.begin(), heap_.end(), worse);
+      heap_.pop_back();
+    }
+  }
+  std::vector<ValidationIssue> sorted() && {
+    std::sort(heap_.begin(), heap_.end(), worse);
+    return std::move(heap_);
+  }
+
+ private:
+  std::vector<ValidationIssue> heap_;
+};
+
+}  // namespace validation_detail
+
+/// The verdict of `particles` with the packer's allowance `tolerance` (relative to the length
+/// unit) against what was `requested` per template id (empty: only a size <= 0 is an issue).
+/// Throws std::invalid_argument for a tolerance or alpha out of range, and for a template id the
+/// request does not have.
+template <int D, class Particles>
+ValidationReport validate_particles(const Particles& particles, double tolerance,
+                                    const std::vector<RequestedTemplate>& requested, double alpha) {
+  using validation_detail::WorstIssues;
+  if (!(tolerance >= 0.0) || !std::isfinite(tolerance))
+    throw std::invalid_argument("validation: the tolerance must be finite and >= 0");
+  if (!(alpha >= 0.0 && alpha <= 1.0)) throw std::invalid_argument("validation: the test level must be in [0, 1]");
+
+  ValidationReport rep;
+  rep.tolerance = tolerance;
+  rep.unit_name = Particles::kUnitName;
+  rep.radii_alpha = alpha;
+  const std::size_t n = particles.size();
+  rep.particles = n;
+  WorstIssues worst;
+  // The length unit of a particle or pair; the smallest positive one for a broken (<= 0) unit.
+  double unit_min = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i)
+    if (particles.finite(i) && particles.unit(i) > 0.0) unit_min = std::min(unit_min, particles.unit(i));
+  if (!std::isfinite(unit_min)) unit_min = 0.0;
+  auto scale = [unit_min](double u) { return u > 0.0 ? u : (unit_min > 0.0 ? unit_min : 1.0); };
+
+  // Per particle: finiteness, size range, container.
+  std::vector<std::vector<double>> sizes(std::max<std::size_t>(requested.size(), 1));
+  std::vector<std::uint64_t> counts(sizes.size(), 0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto i = static_cast<std::int64_t>(k);
+    if (!particles.finite(k)) {
+      ++rep.non_finite_count;
+      worst.add({"non_finite", i, -1, std::numeric_limits<double>::infinity()});
+      continue;
+    }
+    const auto t = static_cast<std::size_t>(particles.template_of(k));
+    if (!requested.empty() && t >= requested.size())
+      throw std::invalid_argument("validation: particle " + std::to_string(k) + " names template " + std::to_string(t) +
+                                  " but " + std::to_string(requested.size()) + " were requested");
+    const RadiusDistribution* law = requested.empty() ? nullptr : requested[t].size;
+    const double size = particles.size_of(k);
+    const double excess = law ? radius_excess(*law, size) : (size > 0.0 ? 0.0 : 1.0);
+    if (law ? excess > kRadiusSlack : excess > 0.0) {
+      ++rep.radius_count;
+      worst.add({Particles::kSizeIssue, i, -1, excess});
+    }
+    const std::size_t slot = requested.empty() ? 0 : t;
+    sizes[slot].push_back(size);
+    ++counts[slot];
+    const double u = scale(particles.unit(k));
+    const double out = particles.protrusion(k, u) / u;
+    rep.max_outside_rel = std::max(rep.max_outside_rel, out);
+    if (out > tolerance) {
+      ++rep.outside_count;
+      worst.add({"outside", i, -1, out});
+    }
+    if (std::abs(out) <= tolerance) ++rep.wall_contacts;
+  }
+
+  // Every pair that can overlap or touch: the reach boxes grown by the tolerance.
+  const CellList<D> cells(particles.centers(), particles.reach_radii(), tolerance);
+  cells.for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
+    ++rep.pairs_checked;
+    const double u = scale(std::min(particles.unit(i), particles.unit(j)));
+    const double overlap = particles.overlap(i, j) / u;
+    rep.max_overlap_rel = std::max(rep.max_overlap_rel, overlap);
+    if (overlap > tolerance) {
+      ++rep.overlap_count;
+      worst.add({"overlap", i, j, overlap});
+    } else if (overlap >= -tolerance) {
+      ++rep.contacts;
+      rep.max_contact_gap_rel = std::max(rep.max_contact_gap_rel, std::abs(overlap));
+    }
+  });
+
+  // Sizes per template and the mix of templates.
+  rep.sizes.resize(requested.size());
+  for (std::size_t t = 0; t < requested.size(); ++t)
+    if (requested[t].size && !sizes[t].empty()) rep.sizes[t] = radii_fit(std::move(sizes[t]), *requested[t].size);
+  if (requested.size() > 1 && n > rep.non_finite_count) {
+    double total = 0;
+    for (const RequestedTemplate& r : requested) total += r.fraction;
+    std::vector<double> share;
+    for (const RequestedTemplate& r : requested) share.push_back(r.fraction / total);
+    rep.mix = chi_square_counts(counts, share);
+  }
+  rep.worst = std::move(worst).sorted();
+  rep.ok = !rep.empty() && rep.overlap_count + rep.outside_count + rep.radius_count + rep.non_finite_count == 0 &&
+           rep.sizes_ok();
+  return rep;
+}
+
+}  // namespace fp
