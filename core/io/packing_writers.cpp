@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -14,6 +13,7 @@
 #include "core/io/atomic_file.hpp"
 #include "core/io/lammps_box.hpp"
 #include "core/io/text_buffer.hpp"
+#include "core/io/vtu_appended.hpp"
 #include "core/io/vtu_frame_field.hpp"
 
 namespace fp {
@@ -87,87 +87,33 @@ void write_lammps(std::ostream& out, const Packing<D>& p, const RunRecord& rec) 
 }
 
 // VTU: one VTK_VERTEX cell per particle, data appended as raw binary (exact doubles, ~57
-// bytes per particle). Each appended block is a UInt64 byte count followed by the bytes.
-// Points are absolute, rounded to doubles; away from the origin the exact centres follow
-// (core/io/vtu_frame_field.hpp).
-template <typename T>
-void write_raw(std::ostream& out, const T* data, std::size_t count) {
-  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(count * sizeof(T)));
-}
-
-template <typename T, typename Fill>
-void write_block(std::ostream& out, std::size_t count, Fill fill) {
-  const std::uint64_t bytes = count * sizeof(T);
-  write_raw(out, &bytes, 1);
-  std::vector<T> chunk;
-  constexpr std::size_t kChunk = 1 << 14;
-  chunk.reserve(kChunk);
-  for (std::size_t i = 0; i < count; ++i) {
-    chunk.push_back(fill(i));
-    if (chunk.size() == kChunk) {
-      write_raw(out, chunk.data(), chunk.size());
-      chunk.clear();
-    }
-  }
-  write_raw(out, chunk.data(), chunk.size());
-}
-
+// bytes per particle; core/io/vtu_appended.hpp). Points are absolute, rounded to doubles; away
+// from the origin the exact centres follow (core/io/vtu_frame_field.hpp).
 template <int D>
-void write_vtu(std::ostream& out, const Packing<D>& p) {
+void write_vtu(std::ostream& out, const std::string& path, const Packing<D>& p) {
   const std::uint64_t n = p.size();
-  const std::uint64_t head = sizeof(std::uint64_t);
-  const std::uint64_t off_radius = 0;
-  const std::uint64_t off_id = off_radius + head + 8 * n;
-  const std::uint64_t off_points = off_id + head + 8 * n;
-  const std::uint64_t off_conn = off_points + head + 24 * n;
-  const std::uint64_t off_offsets = off_conn + head + 8 * n;
-  const std::uint64_t off_types = off_offsets + head + 8 * n;
-  const bool local = !p.origin.isZero();
-  const std::uint64_t off_local = off_types + head + n;
-  const std::string ns = std::to_string(n);
-  auto array = [](const char* type, const char* name, int comps, std::uint64_t offset) {
-    std::string s = std::string("        <DataArray type=\"") + type + "\" Name=\"" + name + "\"";
-    if (comps > 1) s += " NumberOfComponents=\"" + std::to_string(comps) + "\"";
-    return s + " format=\"appended\" offset=\"" + std::to_string(offset) + "\"/>\n";
-  };
-  std::string h;
-  h += "<?xml version=\"1.0\"?>\n";
-  h += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"";
-  h += std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
-  h += "\" header_type=\"UInt64\">\n";
-  h += "  <UnstructuredGrid>\n";
-  if (local) h += vtu_frame_origin_field(p.origin[0], p.origin[1], D == 3 ? p.origin[D - 1] : 0.0);
-  h += "    <Piece NumberOfPoints=\"" + ns + "\" NumberOfCells=\"" + ns + "\">\n";
-  h += "      <PointData Scalars=\"radius\">\n";
-  h += array("Float64", "radius", 1, off_radius);
-  h += array("Int64", "id", 1, off_id);
-  if (local) h += array("Float64", "local_position", 3, off_local);
-  h += "      </PointData>\n";
-  h += "      <Points>\n";
-  h += array("Float64", "Points", 3, off_points);
-  h += "      </Points>\n";
-  h += "      <Cells>\n";
-  h += array("Int64", "connectivity", 1, off_conn);
-  h += array("Int64", "offsets", 1, off_offsets);
-  h += array("UInt8", "types", 1, off_types);
-  h += "      </Cells>\n";
-  h += "    </Piece>\n";
-  h += "  </UnstructuredGrid>\n";
-  h += "  <AppendedData encoding=\"raw\">\n   _";
-  out.write(h.data(), static_cast<std::streamsize>(h.size()));
-
-  write_block<double>(out, n, [&](std::size_t i) { return p.radii[i]; });
-  write_block<std::int64_t>(out, n, [](std::size_t i) { return static_cast<std::int64_t>(i); });
-  write_block<double>(out, 3 * n, [&](std::size_t j) {
-    const int k = static_cast<int>(j % 3);
-    return (k < D ? p.origin[k] : 0.0) + coord(p, j / 3, k);
-  });
-  write_block<std::int64_t>(out, n, [](std::size_t i) { return static_cast<std::int64_t>(i); });
-  write_block<std::int64_t>(out, n, [](std::size_t i) { return static_cast<std::int64_t>(i + 1); });
-  write_block<std::uint8_t>(out, n, [](std::size_t) { return std::uint8_t{1}; });  // VTK_VERTEX
-  if (local) write_block<double>(out, 3 * n, [&](std::size_t j) { return coord(p, j / 3, static_cast<int>(j % 3)); });
-  const std::string tail = "\n  </AppendedData>\n</VTKFile>\n";
-  out.write(tail.data(), static_cast<std::streamsize>(tail.size()));
+  using S = VtuArray;
+  std::vector<VtuArray> a;
+  a.push_back({S::PointData, "Float64", "radius", 1, n, 8, [&p](VtuRawOut& o) {
+                 for (const double r : p.radii) o.put<double>(r);
+               }});
+  a.push_back({S::PointData, "Int64", "id", 1, n, 8, [n](VtuRawOut& o) {
+                 for (std::uint64_t i = 0; i < n; ++i) o.put<std::int64_t>(static_cast<std::int64_t>(i));
+               }});
+  a.push_back({S::Points, "Float64", "Points", 3, 3 * n, 8, [&p, n](VtuRawOut& o) {
+                 for (std::uint64_t i = 0; i < n; ++i)
+                   for (int k = 0; k < 3; ++k) o.put<double>((k < D ? p.origin[k] : 0.0) + coord(p, i, k));
+               }});
+  append_vertex_cells(a, n);
+  std::string field;
+  if (!p.origin.isZero()) {  // listed with the point data, appended last
+    a.push_back({S::PointData, "Float64", "local_position", 3, 3 * n, 8, [&p, n](VtuRawOut& o) {
+                   for (std::uint64_t i = 0; i < n; ++i)
+                     for (int k = 0; k < 3; ++k) o.put<double>(coord(p, i, k));
+                 }});
+    field = vtu_frame_origin_field(p.origin[0], p.origin[1], D == 3 ? p.origin[D - 1] : 0.0);
+  }
+  write_vtu_appended(out, path, n, n, " Scalars=\"radius\"", a, field);
 }
 
 template <int D>
@@ -189,7 +135,7 @@ void write_packing(OutputFormat format, const std::string& path, const Packing<D
   AtomicFile file(path);
   std::ostream& out = file.stream();
   switch (format) {
-    case OutputFormat::Vtu: write_vtu(out, packing); break;
+    case OutputFormat::Vtu: write_vtu(out, path, packing); break;
     case OutputFormat::Yade: write_yade(out, packing); break;
     case OutputFormat::Lammps: write_lammps(out, packing, record); break;
     case OutputFormat::Csv: write_csv(out, packing); break;

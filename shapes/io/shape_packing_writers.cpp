@@ -20,6 +20,7 @@
 #include "core/io/lammps_box.hpp"
 #include "core/io/text_buffer.hpp"
 #include "core/io/vtu_frame_field.hpp"
+#include "core/io/vtu_appended.hpp"
 #include "shapes/spherocylinder_shape.hpp"
 
 namespace fp {
@@ -59,105 +60,7 @@ bool is_ball_family(const std::string& f) { return f == "sphere" || f == "disk" 
 
 bool format_writes_balls_only(OutputFormat f) { return f == OutputFormat::Yade || f == OutputFormat::Lammps; }
 
-// ---- VTU (appended raw data, UInt64 block headers, native byte order) ------------------
-
-class RawOut {
- public:
-  explicit RawOut(std::ostream& out) : out_(out) { buf_.reserve(kBlock + 64); }
-  template <typename T>
-  void put(T v) {
-    char b[sizeof(T)];
-    std::memcpy(b, &v, sizeof(T));
-    buf_.append(b, sizeof(T));
-    bytes_ += sizeof(T);
-    if (buf_.size() >= kBlock) flush();
-  }
-  void put3(const Vec3& v) {
-    put(v.x());
-    put(v.y());
-    put(v.z());
-  }
-  void flush() {
-    out_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
-    buf_.clear();
-  }
-  std::uint64_t bytes() const { return bytes_; }
-
- private:
-  static constexpr std::size_t kBlock = 1 << 16;
-  std::ostream& out_;
-  std::string buf_;
-  std::uint64_t bytes_ = 0;
-};
-
-struct VtuArray {
-  enum Section { PointData, CellData, Points, Cells } section;
-  const char* type;  // "Float64", "Int64", "UInt8"
-  std::string name;
-  int components;
-  std::uint64_t values;  // scalars in the array (tuples * components)
-  std::size_t value_size;
-  std::function<void(RawOut&)> emit;  // writes exactly `values` scalars
-
-  std::uint64_t bytes() const { return values * value_size; }
-};
-
-void write_vtu(std::ostream& out, const std::string& path, std::uint64_t n_points, std::uint64_t n_cells,
-               const std::string& point_attributes, const std::vector<VtuArray>& arrays,
-               const std::string& field_data = "") {
-  std::vector<std::uint64_t> offsets;
-  std::uint64_t offset = 0;
-  for (const auto& a : arrays) {
-    offsets.push_back(offset);
-    offset += sizeof(std::uint64_t) + a.bytes();
-  }
-  auto section = [&](VtuArray::Section s, const std::string& indent) {
-    std::string x;
-    for (std::size_t k = 0; k < arrays.size(); ++k) {
-      const auto& a = arrays[k];
-      if (a.section != s) continue;
-      x += indent + "<DataArray type=\"" + a.type + "\" Name=\"" + a.name + "\"";
-      if (a.components > 1) x += " NumberOfComponents=\"" + std::to_string(a.components) + "\"";
-      x += " format=\"appended\" offset=\"" + std::to_string(offsets[k]) + "\"/>\n";
-    }
-    return x;
-  };
-  std::string h;
-  h += "<?xml version=\"1.0\"?>\n";
-  h += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"";
-  h += std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
-  h += "\" header_type=\"UInt64\">\n";
-  h += "  <UnstructuredGrid>\n";
-  h += field_data;
-  h += "    <Piece NumberOfPoints=\"" + std::to_string(n_points) + "\" NumberOfCells=\"" + std::to_string(n_cells) +
-       "\">\n";
-  h += "      <PointData" + point_attributes + ">\n" + section(VtuArray::PointData, "        ") + "      </PointData>\n";
-  h += "      <CellData>\n" + section(VtuArray::CellData, "        ") + "      </CellData>\n";
-  h += "      <Points>\n" + section(VtuArray::Points, "        ") + "      </Points>\n";
-  h += "      <Cells>\n" + section(VtuArray::Cells, "        ") + "      </Cells>\n";
-  h += "    </Piece>\n";
-  h += "  </UnstructuredGrid>\n";
-  h += "  <AppendedData encoding=\"raw\">\n   _";
-  out.write(h.data(), static_cast<std::streamsize>(h.size()));
-
-  RawOut raw(out);
-  for (const auto& a : arrays) {
-    const std::uint64_t before = raw.bytes();
-    raw.put<std::uint64_t>(a.bytes());
-    a.emit(raw);
-    if (raw.bytes() - before != sizeof(std::uint64_t) + a.bytes())
-      fail(path, "internal error: VTU array '" + a.name + "' has " + std::to_string(raw.bytes() - before - 8) +
-                     " bytes, announced " + std::to_string(a.bytes()));
-  }
-  raw.flush();
-  const std::string tail = "\n  </AppendedData>\n</VTKFile>\n";
-  out.write(tail.data(), static_cast<std::streamsize>(tail.size()));
-}
-
-constexpr std::uint8_t kVtkVertex = 1;
-constexpr std::uint8_t kVtkPolyLine = 4;
-constexpr std::uint8_t kVtkTriangle = 5;
-constexpr std::uint8_t kVtkPolygon = 7;
+// ---- VTU (core/io/vtu_appended.hpp) ---------------------------------------------------
 
 template <int D>
 void write_centres_vtu(std::ostream& out, const std::string& path, const ShapePacking<D>& p) {
@@ -166,20 +69,20 @@ void write_centres_vtu(std::ostream& out, const std::string& path, const ShapePa
   std::vector<VtuArray> a;
   using S = VtuArray;
   auto f64 = [&](const char* name, auto value) {
-    a.push_back({S::PointData, "Float64", name, 1, n, 8, [&ps, value](RawOut& o) {
+    a.push_back({S::PointData, "Float64", name, 1, n, 8, [&ps, value](VtuRawOut& o) {
                    for (const auto& q : ps) o.put<double>(value(q));
                  }});
   };
-  a.push_back({S::PointData, "Int64", "id", 1, n, 8, [n](RawOut& o) {
+  a.push_back({S::PointData, "Int64", "id", 1, n, 8, [n](VtuRawOut& o) {
                  for (std::uint64_t i = 0; i < n; ++i) o.put<std::int64_t>(static_cast<std::int64_t>(i));
                }});
-  a.push_back({S::PointData, "Int64", "shape_id", 1, n, 8, [&ps](RawOut& o) {
+  a.push_back({S::PointData, "Int64", "shape_id", 1, n, 8, [&ps](VtuRawOut& o) {
                  for (const auto& q : ps) o.put<std::int64_t>(q.template_id);
                }});
   f64("size", [](const Particle<D>& q) { return q.size; });
   f64("bounding_radius", [](const Particle<D>& q) { return q.shape->bounding_radius(); });
   f64("measure", [](const Particle<D>& q) { return q.shape->measure(); });
-  a.push_back({S::PointData, "Float64", "quaternion", 4, 4 * n, 8, [&ps](RawOut& o) {
+  a.push_back({S::PointData, "Float64", "quaternion", 4, 4 * n, 8, [&ps](VtuRawOut& o) {
                  for (const auto& q : ps) {
                    const Eigen::Vector4d w = quaternion_of<D>(q.pose.rotation);
                    for (int k = 0; k < 4; ++k) o.put<double>(w[k]);
@@ -187,32 +90,24 @@ void write_centres_vtu(std::ostream& out, const std::string& path, const ShapePa
                }});
   const char* axes[] = {"axis_x", "axis_y", "axis_z"};
   for (int k = 0; k < 3; ++k)
-    a.push_back({S::PointData, "Float64", axes[k], 3, 3 * n, 8, [&ps, k](RawOut& o) {
+    a.push_back({S::PointData, "Float64", axes[k], 3, 3 * n, 8, [&ps, k](VtuRawOut& o) {
                    for (const auto& q : ps) o.put3(world_axis<D>(q.pose, k));
                  }});
   // Points are absolute (rounded to doubles); away from the origin the exact positions follow as
   // local_position relative to the field frame_origin, as for spheres (core/io/packing_writers.cpp).
   const Vec3 origin = embed<D>(p.origin);
-  a.push_back({S::Points, "Float64", "Points", 3, 3 * n, 8, [&ps, origin](RawOut& o) {
+  a.push_back({S::Points, "Float64", "Points", 3, 3 * n, 8, [&ps, origin](VtuRawOut& o) {
                  for (const auto& q : ps) o.put3(origin + embed<D>(q.pose.position));
                }});
   std::string field;
   if (!p.origin.isZero()) {
-    a.push_back({S::PointData, "Float64", "local_position", 3, 3 * n, 8, [&ps](RawOut& o) {
+    a.push_back({S::PointData, "Float64", "local_position", 3, 3 * n, 8, [&ps](VtuRawOut& o) {
                    for (const auto& q : ps) o.put3(embed<D>(q.pose.position));
                  }});
     field = vtu_frame_origin_field(origin.x(), origin.y(), origin.z());
   }
-  a.push_back({S::Cells, "Int64", "connectivity", 1, n, 8, [n](RawOut& o) {
-                 for (std::uint64_t i = 0; i < n; ++i) o.put<std::int64_t>(static_cast<std::int64_t>(i));
-               }});
-  a.push_back({S::Cells, "Int64", "offsets", 1, n, 8, [n](RawOut& o) {
-                 for (std::uint64_t i = 0; i < n; ++i) o.put<std::int64_t>(static_cast<std::int64_t>(i + 1));
-               }});
-  a.push_back({S::Cells, "UInt8", "types", 1, n, 1, [n](RawOut& o) {
-                 for (std::uint64_t i = 0; i < n; ++i) o.put<std::uint8_t>(kVtkVertex);
-               }});
-  write_vtu(out, path, n, n, " Scalars=\"bounding_radius\" Vectors=\"axis_x\"", a, field);
+  append_vertex_cells(a, n);
+  write_vtu_appended(out, path, n, n, " Scalars=\"bounding_radius\" Vectors=\"axis_x\"", a, field);
 }
 
 // One particle's display surface in the world, as VTK cells (local point indices).
@@ -365,20 +260,20 @@ void write_surfaces_vtu(std::ostream& out, const std::string& path, const ShapeP
   const std::size_t n = p.size();
   using S = VtuArray;
   std::vector<VtuArray> a;
-  a.push_back({S::CellData, "Int64", "id", 1, s.n_cells, 8, [&s, n](RawOut& o) {
+  a.push_back({S::CellData, "Int64", "id", 1, s.n_cells, 8, [&s, n](VtuRawOut& o) {
                  for (std::size_t i = 0; i < n; ++i)
                    for (std::size_t c = 0; c < s.cells_of(i); ++c) o.put<std::int64_t>(static_cast<std::int64_t>(i));
                }});
-  a.push_back({S::CellData, "Int64", "shape_id", 1, s.n_cells, 8, [&s, &p, n](RawOut& o) {
+  a.push_back({S::CellData, "Int64", "shape_id", 1, s.n_cells, 8, [&s, &p, n](VtuRawOut& o) {
                  for (std::size_t i = 0; i < n; ++i)
                    for (std::size_t c = 0; c < s.cells_of(i); ++c) o.put<std::int64_t>(p.particles[i].template_id);
                }});
   const Vec3 origin = embed<D>(p.origin);  // display only: absolute, rounded to doubles
-  a.push_back({S::Points, "Float64", "Points", 3, 3 * s.n_points, 8, [&s, n, origin](RawOut& o) {
+  a.push_back({S::Points, "Float64", "Points", 3, 3 * s.n_points, 8, [&s, n, origin](VtuRawOut& o) {
                  for (std::size_t i = 0; i < n; ++i)
                    for (const auto& x : s.get(i).points) o.put3(origin + x);
                }});
-  a.push_back({S::Cells, "Int64", "connectivity", 1, s.n_connectivity, 8, [&s, n](RawOut& o) {
+  a.push_back({S::Cells, "Int64", "connectivity", 1, s.n_connectivity, 8, [&s, n](VtuRawOut& o) {
                  std::int64_t base = 0;
                  for (std::size_t i = 0; i < n; ++i) {
                    const LocalCells& c = s.get(i);
@@ -386,7 +281,7 @@ void write_surfaces_vtu(std::ostream& out, const std::string& path, const ShapeP
                    base += static_cast<std::int64_t>(c.points.size());
                  }
                }});
-  a.push_back({S::Cells, "Int64", "offsets", 1, s.n_cells, 8, [&s, n](RawOut& o) {
+  a.push_back({S::Cells, "Int64", "offsets", 1, s.n_cells, 8, [&s, n](VtuRawOut& o) {
                  std::int64_t base = 0;
                  for (std::size_t i = 0; i < n; ++i) {
                    const LocalCells& c = s.get(i);
@@ -394,11 +289,11 @@ void write_surfaces_vtu(std::ostream& out, const std::string& path, const ShapeP
                    base += static_cast<std::int64_t>(c.connectivity.size());
                  }
                }});
-  a.push_back({S::Cells, "UInt8", "types", 1, s.n_cells, 1, [&s, n](RawOut& o) {
+  a.push_back({S::Cells, "UInt8", "types", 1, s.n_cells, 1, [&s, n](VtuRawOut& o) {
                  for (std::size_t i = 0; i < n; ++i)
                    for (const std::uint8_t t : s.get(i).types) o.put<std::uint8_t>(t);
                }});
-  write_vtu(out, path, s.n_points, s.n_cells, "", a);
+  write_vtu_appended(out, path, s.n_points, s.n_cells, "", a);
 }
 
 // ---- CSV ------------------------------------------------------------------------------
