@@ -14,13 +14,12 @@
 
 #include "cli/failure_report.hpp"
 #include "cli/packing_input.hpp"
+#include "contact/shape_analysis.hpp"
 #include "contact/shape_validation.hpp"
 #include "core/io/analysis_json.hpp"
 #include "core/io/atomic_file.hpp"
 #include "core/io/output_paths.hpp"
 #include "core/io/temp_file_registry.hpp"
-#include "core/io/text_buffer.hpp"
-#include "core/metrics/fabric.hpp"
 #include "core/metrics/packing_analysis.hpp"
 
 #ifndef FRONTPACK_PLOT_SCRIPT
@@ -122,6 +121,27 @@ std::string draw_plots(const AnalyzeCommandOptions& o, const std::string& json_t
   return "";
 }
 
+/// Prints and writes an analysis, spheres or shapes alike: the table, the JSON, the figures
+/// (`sizes` and `law`: the radius figure's sample and the law it is drawn against, if any).
+int report(const PackingAnalysis& a, const std::optional<Scene>& scene, const std::vector<double>& sizes,
+           const RadiusDistribution* law, const AnalyzeCommandOptions& o) {
+  const std::string json = analysis_json(a);
+  if (!o.json_path.empty()) write_text_file_atomically(o.json_path, json);
+  if (!o.quiet) {
+    std::printf("frontpack analyze   %s%s%s (%dD%s)\n", o.packing_path.c_str(), scene ? "   scene " : "",
+                scene ? scene->source_path.c_str() : "", a.dimension, a.templates.empty() ? "" : ", particles of shapes");
+    std::printf("%s\n", a.summary().c_str());
+  }
+  if (o.plots_dir.empty()) return 0;
+  const std::string problem = draw_plots(o, json, radius_cdf_csv(sizes, law));
+  if (!problem.empty()) {
+    std::fprintf(stderr, "frontpack: error: no plots: %s\n", problem.c_str());
+    return 1;
+  }
+  if (!o.quiet) std::printf("  plots          %s\n", o.plots_dir.c_str());
+  return 0;
+}
+
 template <int D>
 int analyze(const std::optional<Scene>& scene, const Packing<D>& P, const AnalyzeCommandOptions& o) {
   const Container<D>* container = nullptr;
@@ -133,88 +153,25 @@ int analyze(const std::optional<Scene>& scene, const Packing<D>& P, const Analyz
     opt.contact_tolerance = scene->packer.contact_tolerance;
   }
   if (o.tolerance >= 0) opt.contact_tolerance = o.tolerance;
-  const PackingAnalysis a = analyze_packing<D>(P, container, dist, opt);
-  const std::string json = analysis_json(a);
-  if (!o.json_path.empty()) write_text_file_atomically(o.json_path, json);
-  if (!o.quiet) {
-    std::printf("frontpack analyze   %s%s%s (%dD)\n", o.packing_path.c_str(), scene ? "   scene " : "",
-                scene ? scene->source_path.c_str() : "", D);
-    std::printf("%s\n", a.summary().c_str());
-  }
-  if (o.plots_dir.empty()) return 0;
-  const std::string problem = draw_plots(o, json, radius_cdf_csv(P.radii, dist));
-  if (!problem.empty()) {
-    std::fprintf(stderr, "frontpack: error: no plots: %s\n", problem.c_str());
-    return 1;
-  }
-  if (!o.quiet) std::printf("  plots          %s\n", o.plots_dir.c_str());
-  return 0;
+  return report(analyze_packing<D>(P, container, dist, opt), scene, P.radii, dist, o);
 }
 
-/// A packing of shapes (read from its json output with its scene): the figures of `pack` for
-/// shapes (contacts, coordination, overlaps, sizes and mix: contact/shape_validation.hpp, same
-/// tolerance), the fraction of the container filled (the shapes' exact measures), and the
-/// orientation order of the body x axes (the capsule's and cylinder's axis): the orientation
-/// tensor <u u^T> (core/metrics/fabric.hpp, trace 1) and the nematic order S = (D λmax - 1) / (D - 1),
-/// 0 for isotropic orientations (to ~1/sqrt(N)), 1 for all axes parallel.
+/// A packing of shapes (read from its json output with its scene): the same figures through
+/// contact/shape_analysis.hpp, at the scene's tolerance of `pack` (minimisation.gap_tolerance).
+/// The radius figure shows the sizes against their law for one template, else the
+/// volume-equivalent radii.
 template <int D>
-int analyze_shapes(const Scene& scene, const ShapePacking<D>& P, const AnalyzeCommandOptions& o) {
-  const Container<D>& container = *scene.container<D>();
-  const double tol = o.tolerance >= 0 ? o.tolerance : scene.packer.minimisation.gap_tolerance;
-  const std::vector<RequestedTemplate> requested = requested_templates(scene);
-  std::vector<std::uint64_t> count(requested.size(), 0);
-  double solid = 0;
-  std::vector<Vec<D>> axes;
-  for (const Particle<D>& p : P.particles) {
-    ++count[static_cast<std::size_t>(p.template_id)];
-    solid += p.shape->measure();
-    axes.push_back(p.pose.rotation.col(0));
-  }
-  const ValidationReport v = validate_shapes<D>(P, container, tol, requested);
-  const double vf = solid / container.measure();
-  const FabricTensor orientation = fabric_of_directions<D>(axes);
-  const double order = orientation.eigenvalues.empty() ? 0.0 : (D * orientation.eigenvalues.back() - 1) / (D - 1);
-
-  std::ostringstream json;
-  {
-    TextBuffer b(json);
-    b.text("{\n  \"dimension\": ").integer(D).text(",\n  \"particles\": ").integer(static_cast<std::int64_t>(P.size()));
-    b.text(",\n  \"templates\": [");
-    for (std::size_t t = 0; t < count.size(); ++t) {
-      b.text(t ? ", " : "").text("{\"family\": ").json_string(scene.particle_templates[t].family);
-      b.text(", \"count\": ").integer(static_cast<std::int64_t>(count[t])).ch('}');
-    }
-    b.text("],\n  \"volume_fraction_container\": ").json_number(vf);
-    b.text(",\n  \"contact_tolerance\": ").json_number(tol);
-    b.text(",\n  \"mean_coordination\": ").json_number(v.mean_coordination());
-    b.text(",\n  \"contacts\": ").integer(static_cast<std::int64_t>(v.contacts));
-    b.text(",\n  \"wall_contacts\": ").integer(static_cast<std::int64_t>(v.wall_contacts));
-    b.text(",\n  \"max_overlap_over_rmin\": ").json_number(v.max_overlap_rel);
-    b.text(",\n  \"max_contact_gap_over_rmin\": ").json_number(v.max_contact_gap_rel);
-    b.text(",\n  \"orientation_tensor\": [");
-    for (std::size_t k = 0; k < orientation.tensor.size(); ++k) b.text(k ? ", " : "").json_number(orientation.tensor[k]);
-    b.text("],\n  \"orientation_order\": ").json_number(order);
-    b.text(",\n  \"validation\": ").json_string(v.ok ? "ok" : "FAILED");
-    b.text(",\n  \"validation_summary\": ").json_string(v.summary()).text("\n}\n");
-    b.flush();
-  }
-  if (!o.json_path.empty()) write_text_file_atomically(o.json_path, json.str());
-  if (!o.quiet) {
-    std::printf("frontpack analyze   %s   scene %s (%dD, particles of shapes)\n", o.packing_path.c_str(), scene.source_path.c_str(), D);
-    std::printf("particles            %zu:", P.size());
-    for (std::size_t t = 0; t < count.size(); ++t)
-      std::printf("%s %llu %s", t ? "," : "", static_cast<unsigned long long>(count[t]), scene.particle_templates[t].family.c_str());
-    std::printf("\ncontainer            %s\n", container.describe().c_str());
-    std::printf("%s container         %.6g (exact: the shapes' own measures)\n", D == 3 ? "VF" : "AF", vf);
-    std::printf("coordination z       %.4f, tol %.3g of the smaller circumscribed radius\n", v.mean_coordination(), tol);
-    std::printf("contacts             %llu between particles, %llu with walls\n", static_cast<unsigned long long>(v.contacts),
-                static_cast<unsigned long long>(v.wall_contacts));
-    std::printf("max overlap / gap    %.3g / %.3g of the smaller circumscribed radius\n", v.max_overlap_rel, v.max_contact_gap_rel);
-    std::printf("orientation order    S = %.4f (body x axes; 0 isotropic, 1 parallel), tensor eigenvalues", order);
-    for (const double e : orientation.eigenvalues) std::printf(" %.4f", e);
-    std::printf("\n%s\n", v.summary().c_str());
-  }
-  return 0;
+int analyze(const std::optional<Scene>& scene, const ShapePacking<D>& P, const AnalyzeCommandOptions& o) {
+  AnalysisOptions opt;
+  opt.contact_tolerance = o.tolerance >= 0 ? o.tolerance : scene->packer.minimisation.gap_tolerance;
+  std::vector<std::string> families;
+  for (const ParticleTemplateSpec& t : scene->particle_templates) families.push_back(t.family);
+  const std::vector<RequestedTemplate> requested = requested_templates(*scene);
+  const PackingAnalysis a = analyze_shape_packing<D>(P, *scene->container<D>(), requested, families, opt);
+  std::vector<double> sizes;
+  const bool one = requested.size() == 1 && requested[0].size;
+  for (const Particle<D>& p : P.particles) sizes.push_back(one ? p.size : equivalent_radius<D>(p.shape->measure()));
+  return report(a, scene, sizes, one ? requested[0].size : nullptr, o);
 }
 
 }  // namespace
@@ -235,9 +192,6 @@ int run_analyze_command(const AnalyzeCommandOptions& o) {
     }
     check_output_paths(writes, {});  // before reading: a bad path is refused at once
     in = read_packing_input(o.packing_path, o.format, o.scene_path, /*shapes_too=*/true);
-    if (in.shapes && !o.plots_dir.empty())
-      throw std::runtime_error("option --plots: the figures are drawn for packings of spheres and disks (" + o.scene_path +
-                               " describes shapes; --json writes the figures of a packing of shapes)");
     std::vector<NamedPath> reads = {{o.packing_path, "argument PACKING", "packing file"}};
     if (in.scene)
       for (const NamedPath& r : scene_reads(*in.scene, "option --scene")) reads.push_back(r);
@@ -247,8 +201,7 @@ int run_analyze_command(const AnalyzeCommandOptions& o) {
   }
   try {
     const Activity doing("analysing packing '" + o.packing_path + "'");
-    if (in.shapes)
-      return in.dimension == 2 ? analyze_shapes<2>(*in.scene, in.shapes2, o) : analyze_shapes<3>(*in.scene, in.shapes3, o);
+    if (in.shapes) return in.dimension == 2 ? analyze<2>(in.scene, in.shapes2, o) : analyze<3>(in.scene, in.shapes3, o);
     return in.dimension == 2 ? analyze<2>(in.scene, in.packing2, o) : analyze<3>(in.scene, in.packing3, o);
   } catch (...) {
     return report_failure(1);

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/shape_analysis.hpp"
 #include "contact/shape_validation.hpp"
 #include "core/io/output_format.hpp"
 #include "core/io/scene_limits.hpp"
@@ -37,29 +38,26 @@ typename ShapePack<D>::Result ShapePack<D>::pack(const Scene& scene, const Progr
 template <int D>
 PackCheck ShapePack<D>::check(const Scene& scene, const Result& res) {
   const Container<D>& container = *scene.container<D>();
-  PackCheck c;
-  c.validation = validate_shapes<D>(res.packing, container, res.contact_tolerance, requested_templates(scene));
-  c.volume_fraction = res.solid_measure / container.measure();
-  c.timing_name = "validation";
+  AnalysisOptions options;
+  options.contact_tolerance = res.contact_tolerance;
+  std::vector<std::string> families;
+  for (const ParticleTemplateSpec& t : scene.particle_templates) families.push_back(t.family);
+  PackCheck c = pack_check_of(analyze_shape_packing<D>(res.packing, *scene.container<D>(), requested_templates(scene), families, options));
   const SolverCounters& s = res.solver;
-  c.counters = {{"analytic_solves", s.analytic_solves}, {"minimisations", s.minimisations},
-                {"gap_evaluations", s.gap_evaluations}, {"minima_rejected", s.minima_rejected},
-                {"fcl_queries", s.fcl_queries}};
-  c.info = {{"minimisation_algorithm", scene.packer.minimisation.algorithm},
-            {"contact_solver", scene.packer.contact_solver == ContactSolverChoice::Auto ? "auto" : "minimisation"}};
-  const ValidationReport& v = c.validation;
-  char buf[640];
+  const std::vector<std::pair<std::string, std::uint64_t>> solver = {
+      {"analytic_solves", s.analytic_solves}, {"minimisations", s.minimisations}, {"gap_evaluations", s.gap_evaluations},
+      {"minima_rejected", s.minima_rejected}, {"fcl_queries", s.fcl_queries}};
+  c.counters.insert(c.counters.end(), solver.begin(), solver.end());
+  c.info.emplace_back("minimisation_algorithm", scene.packer.minimisation.algorithm);
+  c.info.emplace_back("contact_solver", scene.packer.contact_solver == ContactSolverChoice::Auto ? "auto" : "minimisation");
+  char buf[480];
   std::snprintf(buf, sizeof buf,
-                "  %s     %.4f of the container\n"
-                "  coordination   %.3f   (contacts: |gap| <= %.3g x smaller circumscribed radius; the largest: %.2g)\n"
                 "  solver         %llu solves: %llu in closed form (wrappers, spheres), the others by minimisation (%s): "
                 "%llu minimisations, %llu gap evaluations; %llu FCL queries\n",
-                D == 3 ? "volume fraction" : "area fraction  ", c.volume_fraction, v.mean_coordination(), v.tolerance,
-                v.max_contact_gap_rel, static_cast<unsigned long long>(res.counters.solves),
-                static_cast<unsigned long long>(s.analytic_solves), scene.packer.minimisation.algorithm.c_str(),
-                static_cast<unsigned long long>(s.minimisations), static_cast<unsigned long long>(s.gap_evaluations),
-                static_cast<unsigned long long>(s.fcl_queries));
-  c.summary_lines = buf;
+                static_cast<unsigned long long>(res.counters.solves), static_cast<unsigned long long>(s.analytic_solves),
+                scene.packer.minimisation.algorithm.c_str(), static_cast<unsigned long long>(s.minimisations),
+                static_cast<unsigned long long>(s.gap_evaluations), static_cast<unsigned long long>(s.fcl_queries));
+  c.summary_lines += buf;
   return c;
 }
 

@@ -40,7 +40,11 @@ class ShapeParticles {
     return centers_[i].allFinite() && std::isfinite(radii_[i]) && std::isfinite(p_[i].size) && p_[i].pose.rotation.allFinite();
   }
   double unit(std::size_t i) const { return radii_[i]; }
-  double overlap(std::size_t i, std::size_t j) const { return -np_.gap(p_[i], p_[j]).value; }
+  double overlap(std::size_t i, std::size_t j, Vec<D>* normal) const {
+    const Gap<D> g = np_.gap(p_[i], p_[j]);
+    if (normal) *normal = g.normal;
+    return -g.value;
+  }
   double protrusion(std::size_t i, double) const { return containment_.protrusion(p_[i]); }
   int template_of(std::size_t i) const { return p_[i].template_id; }
   double size_of(std::size_t i) const { return p_[i].size; }
@@ -57,13 +61,14 @@ class ShapeParticles {
 
 template <int D>
 ValidationReport validate_shapes(const ShapePacking<D>& packing, const Container<D>& container, double tolerance,
-                                 const std::vector<RequestedTemplate>& requested, double sizes_alpha) {
-  return validate_particles<D>(ShapeParticles<D>(packing, container), tolerance, requested, sizes_alpha);
+                                 const std::vector<RequestedTemplate>& requested, double sizes_alpha,
+                                 ContactNetwork<D>* network) {
+  return validate_particles<D>(ShapeParticles<D>(packing, container), tolerance, requested, sizes_alpha, network);
 }
 
 template ValidationReport validate_shapes<2>(const ShapePacking<2>&, const Container<2>&, double,
-                                            const std::vector<RequestedTemplate>&, double);
+                                            const std::vector<RequestedTemplate>&, double, ContactNetwork<2>*);
 template ValidationReport validate_shapes<3>(const ShapePacking<3>&, const Container<3>&, double,
-                                            const std::vector<RequestedTemplate>&, double);
+                                            const std::vector<RequestedTemplate>&, double, ContactNetwork<3>*);
 
 }  // namespace fp

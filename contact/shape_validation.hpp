@@ -9,6 +9,7 @@
 
 #include "core/geometry/container.hpp"
 #include "core/io/scene.hpp"
+#include "core/metrics/contact_network.hpp"
 #include "core/metrics/validate.hpp"
 #include "shapes/particle.hpp"
 
@@ -17,10 +18,11 @@ namespace fp {
 /// What a scene of shapes asks for, per template id (its list of particle templates).
 std::vector<RequestedTemplate> requested_templates(const Scene& scene);
 
-/// Without `requested` only overlaps, containment, sizes > 0 and emptiness are checked.
+/// Without `requested` only overlaps, containment, sizes > 0 and emptiness are checked. With
+/// `network`, the contacts (normals from the narrow phase) are listed there too.
 template <int D>
 ValidationReport validate_shapes(const ShapePacking<D>& packing, const Container<D>& container, double tolerance,
-                                const std::vector<RequestedTemplate>& requested = {},
-                                double sizes_alpha = kRadiiAlpha);
+                                 const std::vector<RequestedTemplate>& requested = {},
+                                 double sizes_alpha = kRadiiAlpha, ContactNetwork<D>* network = nullptr);
 
 }  // namespace fp

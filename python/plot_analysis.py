@@ -58,16 +58,19 @@ def radii(cdf_path, a, out_dir):
             r.append(float(row["r"]))
             emp.append(float(row["empirical"]))
             req.append(float(row["requested"]) if row["requested"] else None)
+    # Shapes: the size of the one template against its law, else the volume-equivalent radius.
+    shapes = a["radii"].get("name", "r") != "r"
+    label = "radius" if not shapes else ("size" if req and all(v is not None for v in req) else "volume-equivalent radius r_eq")
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(9, 3.5))
     ax1.hist(r, bins=min(40, max(5, len(r) // 20)), density=True, alpha=0.7, label="placed (sample)")
-    ax1.set_xlabel("radius")
+    ax1.set_xlabel(label)
     ax1.set_ylabel("probability density")
     ax2.step(r, emp, where="post", label="placed")
     if req and all(v is not None for v in req):
         ax2.step(r, req, "--", where="post", label="requested")  # a step CDF stays one for a discrete law
         fit = a["radii_fit"]
         ax2.set_title("%s: %.4g, p = %.3g" % (fit["test"], fit["statistic"], fit["p"]))
-    ax2.set_xlabel("radius")
+    ax2.set_xlabel(label)
     ax2.set_ylabel("CDF")
     ax2.legend()
     ax1.legend()

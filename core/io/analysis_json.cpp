@@ -75,7 +75,12 @@ std::string analysis_json(const PackingAnalysis& a, bool include_timings) {
   Json j;
   j["dimension"] = a.dimension;
   j["particles"] = a.particles;
-  j["radii"] = Json{{"min", a.r_min}, {"max", a.r_max}, {"mean", a.r_mean}};
+  j["radii"] = Json{{"name", a.radius_name}, {"min", a.r_min}, {"max", a.r_max}, {"mean", a.r_mean}};
+  if (!a.templates.empty()) {
+    Json t = Json::array();
+    for (const auto& [family, count] : a.templates) t.push_back(Json{{"family", family}, {"count", count}});
+    j["templates"] = t;
+  }
   j["container"] = Json{{"description", a.container}, {"from_particles", a.container_from_particles},
                         {"measure", a.container_measure}};
   j["contact_tolerance"] = a.contact_tolerance;
@@ -131,6 +136,8 @@ std::string analysis_json(const PackingAnalysis& a, bool include_timings) {
                   {"density", g.density},
                   {"r", g.r},
                   {"g", g.g}};
+  if (a.orientation)
+    j["orientation"] = Json{{"axis", "body x"}, {"tensor", fabric_json(*a.orientation, a.dimension)}, {"order", a.orientation_order}};
   j["validation"] = a.validation ? validation_json(*a.validation) : Json(nullptr);
   if (include_timings) {
     j["timings"] = Json::object();

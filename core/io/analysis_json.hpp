@@ -5,7 +5,8 @@
 // fp_metrics.
 //
 // Layout (keys always present, in this order; NaN and infinities become null):
-//   dimension, particles, radii {min, max, mean}, container {description, from_particles, measure},
+//   dimension, particles, radii {name ("r", or "r_eq" for shapes), min, max, mean},
+//   templates [{family, count}] (shapes only), container {description, from_particles, measure},
 //   contact_tolerance,
 //   volume_fraction {reference {center, radius, value}, curve {r_ref: [], vf: []},
 //                    container {...}, core {...}}   (region: shrink, value, std_error, exact, method,
@@ -20,6 +21,7 @@
 //   relative_projections {reference, bins, contacts, axes: [{axis, histogram, n, d, sqrt_n_d, p}]}
 //   rdf {mean_diameter, range, reference_margin, reference_particles, reference_measure {value,
 //        std_error}, density, r: [], g: []}
+//   orientation {axis, tensor {tensor, eigenvalues, count}, order} (shapes only)
 //   validation (null when not run) {ok, tolerance, radii_alpha, particles, pairs_checked,
 //        max_overlap_rel (over min(ri, rj)), max_outside_rel, overlap_count, outside_count,
 //        radius_count, non_finite_count, contacts, wall_contacts, max_contact_gap_rel,

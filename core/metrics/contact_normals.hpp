@@ -34,4 +34,9 @@ template <int D>
 RelativeProjections relative_projections(const Packing<D>& packing, const std::vector<PairContact>& contacts,
                                          int bins = 20);
 
+/// The same for contact directions given (any length; zero ones left out): a packing of shapes
+/// passes its contact normals (contact_network.hpp), for which the centre line is not the normal.
+template <int D>
+RelativeProjections relative_projections(const std::vector<Vec<D>>& directions, int bins = 20);
+
 }  // namespace fp

@@ -18,26 +18,24 @@ std::string ContactStats::summary() const {
   return buf;
 }
 
-template <int D>
-ContactStats contact_stats(const Packing<D>& packing, const Container<D>* container_or_null, double rel_tol) {
-  const std::vector<PairContact> pairs = find_pair_contacts(packing, rel_tol);
+ContactStats contact_stats_of(int dimension, std::size_t particles, const std::vector<PairContact>& pairs,
+                              const std::vector<WallContact>* walls, double r_unit, double rel_tol) {
   ContactStats s;
   s.tolerance = rel_tol;
-  s.particles = packing.size();
+  s.particles = particles;
   s.contacts = pairs.size();
 
-  const std::vector<std::uint32_t> z = coordination_numbers(packing.size(), pairs);
+  const std::vector<std::uint32_t> z = coordination_numbers(particles, pairs);
   std::vector<std::uint32_t> z_all = z;
-  if (container_or_null != nullptr) {
-    const std::vector<WallContact> walls = find_wall_contacts(packing, *container_or_null, rel_tol);
-    s.wall_contacts = walls.size();
-    for (const WallContact& w : walls) ++z_all[w.i];
+  if (walls != nullptr) {
+    s.wall_contacts = walls->size();
+    for (const WallContact& w : *walls) ++z_all[w.i];
   }
 
   const std::uint32_t z_max = z.empty() ? 0 : *std::max_element(z.begin(), z.end());
   s.histogram.assign(z_max + 1, 0);
   for (const std::uint32_t zi : z) ++s.histogram[zi];
-  const std::uint32_t stable = D == 3 ? 3 : 2;
+  const std::uint32_t stable = dimension == 3 ? 3 : 2;
   for (const std::uint32_t zi : z_all) s.rattlers += zi < stable ? 1 : 0;
   if (s.particles > 0) {
     const double n = static_cast<double>(s.particles);
@@ -46,7 +44,6 @@ ContactStats contact_stats(const Packing<D>& packing, const Container<D>* contai
   }
 
   // Every overlapping pair has gap < 0 <= tol, so it is in the contact list.
-  const double r_min = smallest_radius(packing);
   double worst_gap = 0.0;
   for (const PairContact& c : pairs)
     if (c.gap < worst_gap) {
@@ -54,8 +51,16 @@ ContactStats contact_stats(const Packing<D>& packing, const Container<D>* contai
       s.worst_i = c.i;
       s.worst_j = c.j;
     }
-  if (worst_gap < 0.0) s.max_overlap_rel = -worst_gap / r_min;
+  if (worst_gap < 0.0) s.max_overlap_rel = -worst_gap / r_unit;
   return s;
+}
+
+template <int D>
+ContactStats contact_stats(const Packing<D>& packing, const Container<D>* container_or_null, double rel_tol) {
+  const std::vector<PairContact> pairs = find_pair_contacts(packing, rel_tol);
+  std::vector<WallContact> walls;
+  if (container_or_null != nullptr) walls = find_wall_contacts(packing, *container_or_null, rel_tol);
+  return contact_stats_of(D, packing.size(), pairs, container_or_null ? &walls : nullptr, smallest_radius(packing), rel_tol);
 }
 
 template ContactStats contact_stats<2>(const Packing<2>&, const Container<2>*, double);

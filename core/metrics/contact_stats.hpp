@@ -7,6 +7,7 @@
 
 #include "core/geometry/container.hpp"
 #include "core/geometry/packing.hpp"
+#include "core/metrics/contacts.hpp"
 
 namespace fp {
 
@@ -31,5 +32,10 @@ struct ContactStats {
 /// std::invalid_argument unless rel_tol >= 0. Balls with a non-finite centre or radius are ignored.
 template <int D>
 ContactStats contact_stats(const Packing<D>& packing, const Container<D>* container_or_null, double rel_tol = 1e-9);
+
+/// The same figures from contact lists found elsewhere (contact_network.hpp: a packing of
+/// shapes): `walls` null means no container; overlaps are relative to `r_unit` (r_min).
+ContactStats contact_stats_of(int dimension, std::size_t particles, const std::vector<PairContact>& pairs,
+                              const std::vector<WallContact>* walls, double r_unit, double rel_tol);
 
 }  // namespace fp

@@ -71,6 +71,14 @@ std::vector<std::uint32_t> coordination_numbers(std::size_t particle_count, cons
 }
 
 template <int D>
+std::vector<Vec<D>> centre_lines(const Packing<D>& packing, const std::vector<PairContact>& contacts) {
+  std::vector<Vec<D>> lines;
+  lines.reserve(contacts.size());
+  for (const PairContact& c : contacts) lines.push_back(packing.centers[c.j] - packing.centers[c.i]);
+  return lines;
+}
+
+template <int D>
 double smallest_radius(const Packing<D>& packing) {
   double r_min = std::numeric_limits<double>::infinity();
   for (const double r : packing.radii)
@@ -82,6 +90,8 @@ template std::vector<PairContact> find_pair_contacts<2>(const Packing<2>&, doubl
 template std::vector<PairContact> find_pair_contacts<3>(const Packing<3>&, double);
 template std::vector<WallContact> find_wall_contacts<2>(const Packing<2>&, const Container<2>&, double);
 template std::vector<WallContact> find_wall_contacts<3>(const Packing<3>&, const Container<3>&, double);
+template std::vector<Vec<2>> centre_lines<2>(const Packing<2>&, const std::vector<PairContact>&);
+template std::vector<Vec<3>> centre_lines<3>(const Packing<3>&, const std::vector<PairContact>&);
 template double smallest_radius<2>(const Packing<2>&);
 template double smallest_radius<3>(const Packing<3>&);
 

@@ -36,6 +36,10 @@ template <int D>
 std::vector<WallContact> find_wall_contacts(const Packing<D>& packing, const Container<D>& container,
                                             double rel_tol = 1e-9);
 
+/// The centre line c_j - c_i of every contact (not normalised): the contact directions of spheres.
+template <int D>
+std::vector<Vec<D>> centre_lines(const Packing<D>& packing, const std::vector<PairContact>& contacts);
+
 /// Particle-particle coordination number of every ball.
 std::vector<std::uint32_t> coordination_numbers(std::size_t particle_count, const std::vector<PairContact>& contacts);
 

@@ -188,9 +188,44 @@ Estimate region_measure(const Container<D>& container, double shrink, const QmcO
   return measure_estimate(*region, measure_replicates(*region, qmc, qmc_shifts<D>(qmc)));
 }
 
+namespace {
+
+// Balls: cut in closed form where the region allows it, sampled against the ball otherwise.
 template <int D>
-RegionVolumeFraction vf_region(const Packing<D>& packing, const Container<D>& container, double shrink,
-                               const QmcOptions& qmc) {
+struct BallBodies {
+  const Packing<D>& p;
+  std::size_t size() const { return p.size(); }
+  bool valid(std::size_t i) const { return p.radii[i] >= 0.0 && std::isfinite(p.radii[i]) && p.centers[i].allFinite(); }
+  const Vec<D>& centre(std::size_t i) const { return p.centers[i]; }
+  double radius(std::size_t i) const { return p.radii[i]; }
+  Cut cut(const Region<D>& region, std::size_t i) const { return region.cut(p.centers[i], p.radii[i]); }
+  bool contains(std::size_t i, const Vec<D>& offset) const { return offset.squaredNorm() <= p.radii[i] * p.radii[i]; }
+};
+
+// Bodies of any shape: whole (their exact measure) when their bounding ball is inside the region,
+// nothing when it is outside, sampled against the body otherwise.
+template <int D>
+struct GeneralBodies {
+  const RegionBodies<D>& b;
+  std::size_t size() const { return b.centres.size(); }
+  bool valid(std::size_t i) const {
+    return b.bounding_radii[i] >= 0.0 && std::isfinite(b.bounding_radii[i]) && std::isfinite(b.measures[i]) &&
+           b.centres[i].allFinite();
+  }
+  const Vec<D>& centre(std::size_t i) const { return b.centres[i]; }
+  double radius(std::size_t i) const { return b.bounding_radii[i]; }
+  Cut cut(const Region<D>& region, std::size_t i) const {
+    const Cut ball = region.cut(b.centres[i], b.bounding_radii[i]);
+    if (ball.kind == CutKind::Inside) return {CutKind::Inside, b.measures[i]};
+    if (ball.kind == CutKind::Outside) return ball;
+    return {CutKind::Sample, 0.0};
+  }
+  bool contains(std::size_t i, const Vec<D>& offset) const { return b.contains(i, b.centres[i] + offset); }
+};
+
+template <int D, class Bodies>
+RegionVolumeFraction vf_region_of(const Bodies& bodies, const Container<D>& container, double shrink,
+                                  const QmcOptions& qmc) {
   const auto region = make_region(container, shrink);
   const std::vector<Vec<D>> shifts = qmc_shifts<D>(qmc);
   const std::vector<double> measures = measure_replicates(*region, qmc, shifts);
@@ -206,10 +241,9 @@ RegionVolumeFraction vf_region(const Packing<D>& packing, const Container<D>& co
 
   CompensatedSum whole;
   std::vector<std::size_t> sampled;
-  for (std::size_t i = 0; i < packing.size(); ++i) {
-    const double r = packing.radii[i];
-    if (!(r >= 0.0) || !std::isfinite(r) || !packing.centers[i].allFinite()) continue;
-    const Cut cut = region->cut(packing.centers[i], r);
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (!bodies.valid(i)) continue;
+    const Cut cut = bodies.cut(*region, i);
     switch (cut.kind) {
       case CutKind::Outside: break;
       case CutKind::Inside: ++out.balls_inside; whole.add(cut.measure); break;
@@ -227,14 +261,14 @@ RegionVolumeFraction vf_region(const Packing<D>& packing, const Container<D>& co
   const std::vector<Vec<D>> pts = halton_points<D>(sampled.empty() ? 0 : per_ball);
   std::vector<CompensatedSum> parts(shifts.size(), whole);
   for (const std::size_t i : sampled) {
-    const Vec<D>& c = packing.centers[i];
-    const double r = packing.radii[i];
+    const Vec<D>& c = bodies.centre(i);
+    const double r = bodies.radius(i);
     for (std::size_t k = 0; k < shifts.size(); ++k) {
       const Vec<D> shift = qmc_shift<D>(qmc.seed, (i + 1) * shifts.size() + k);
       std::size_t hits = 0;
       for (const Vec<D>& u : pts) {
         const Vec<D> offset = r * (2.0 * shifted<D>(u, shift).array() - 1.0).matrix();
-        hits += offset.squaredNorm() <= r * r && region->contains(c + offset) ? 1 : 0;
+        hits += bodies.contains(i, offset) && region->contains(c + offset) ? 1 : 0;
       }
       parts[k].add(std::pow(2.0 * r, D) * static_cast<double>(hits) / static_cast<double>(pts.size()));
     }
@@ -261,9 +295,25 @@ RegionVolumeFraction vf_region(const Packing<D>& packing, const Container<D>& co
   return out;
 }
 
+}  // namespace
+
+template <int D>
+RegionVolumeFraction vf_region(const Packing<D>& packing, const Container<D>& container, double shrink,
+                               const QmcOptions& qmc) {
+  return vf_region_of<D>(BallBodies<D>{packing}, container, shrink, qmc);
+}
+
+template <int D>
+RegionVolumeFraction vf_region(const RegionBodies<D>& bodies, const Container<D>& container, double shrink,
+                               const QmcOptions& qmc) {
+  return vf_region_of<D>(GeneralBodies<D>{bodies}, container, shrink, qmc);
+}
+
 template Estimate region_measure<2>(const Container<2>&, double, const QmcOptions&);
 template Estimate region_measure<3>(const Container<3>&, double, const QmcOptions&);
 template RegionVolumeFraction vf_region<2>(const Packing<2>&, const Container<2>&, double, const QmcOptions&);
 template RegionVolumeFraction vf_region<3>(const Packing<3>&, const Container<3>&, double, const QmcOptions&);
+template RegionVolumeFraction vf_region<2>(const RegionBodies<2>&, const Container<2>&, double, const QmcOptions&);
+template RegionVolumeFraction vf_region<3>(const RegionBodies<3>&, const Container<3>&, double, const QmcOptions&);
 
 }  // namespace fp

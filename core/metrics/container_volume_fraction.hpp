@@ -18,6 +18,7 @@
 // A valid packing (every ball inside) has no straddling ball in the whole container, so its VF
 // there is exact for every container and equals vf_container(packing, container.measure()).
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "core/geometry/container.hpp"
@@ -46,6 +47,23 @@ Estimate region_measure(const Container<D>& container, double shrink, const QmcO
 /// or radius are skipped. Throws std::invalid_argument for a negative or non-finite shrink.
 template <int D>
 RegionVolumeFraction vf_region(const Packing<D>& packing, const Container<D>& container, double shrink,
+                               const QmcOptions& qmc = {});
+
+/// Particles of any shape for vf_region: each one's bounding ball (centre, radius), its exact
+/// measure and whether it holds a point. A particle whose bounding ball is inside the region
+/// counts whole (its exact measure), one whose ball is outside counts nothing, and one whose
+/// ball straddles the boundary is sampled by QMC in the ball's bounding cube against
+/// contains(i, x) and the region ("balls" in the result's counts are these particles).
+template <int D>
+struct RegionBodies {
+  std::vector<Vec<D>> centres;
+  std::vector<double> bounding_radii;
+  std::vector<double> measures;
+  std::function<bool(std::size_t, const Vec<D>&)> contains;
+};
+
+template <int D>
+RegionVolumeFraction vf_region(const RegionBodies<D>& bodies, const Container<D>& container, double shrink,
                                const QmcOptions& qmc = {});
 
 }  // namespace fp

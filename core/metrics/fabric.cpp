@@ -24,11 +24,18 @@ FabricTensor make_tensor(const Mat<D>& sum, std::uint64_t count) {
 
 template <int D>
 Fabric fabric_tensors(const Packing<D>& packing, const std::vector<PairContact>& contacts) {
-  const std::vector<std::uint32_t> m = coordination_numbers(packing.size(), contacts);
+  return fabric_tensors<D>(packing.size(), contacts, centre_lines(packing, contacts));
+}
+
+template <int D>
+Fabric fabric_tensors(std::size_t particles, const std::vector<PairContact>& contacts,
+                      const std::vector<Vec<D>>& directions) {
+  const std::vector<std::uint32_t> m = coordination_numbers(particles, contacts);
   Mat<D> per_contact = Mat<D>::Zero(), per_particle = Mat<D>::Zero();
   std::uint64_t used = 0;
-  for (const PairContact& c : contacts) {
-    const Vec<D> d = packing.centers[c.j] - packing.centers[c.i];
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const PairContact& c = contacts[k];
+    const Vec<D>& d = directions[k];
     const double len2 = d.squaredNorm();
     if (!(len2 > 0.0)) continue;
     const Mat<D> nn = d * d.transpose() / len2;
@@ -56,6 +63,8 @@ FabricTensor fabric_of_directions(const std::vector<Vec<D>>& directions) {
 
 template Fabric fabric_tensors<2>(const Packing<2>&, const std::vector<PairContact>&);
 template Fabric fabric_tensors<3>(const Packing<3>&, const std::vector<PairContact>&);
+template Fabric fabric_tensors<2>(std::size_t, const std::vector<PairContact>&, const std::vector<Vec<2>>&);
+template Fabric fabric_tensors<3>(std::size_t, const std::vector<PairContact>&, const std::vector<Vec<3>>&);
 template FabricTensor fabric_of_directions<2>(const std::vector<Vec<2>>&);
 template FabricTensor fabric_of_directions<3>(const std::vector<Vec<3>>&);
 

@@ -1,7 +1,6 @@
 #include "core/metrics/packing_analysis.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <cstdio>
@@ -9,18 +8,11 @@
 
 #include "core/geometry/box_container.hpp"
 #include "core/metrics/contacts.hpp"
+#include "core/metrics/timed_step.hpp"
 #include "core/metrics/volume_fraction.hpp"
 
 namespace fp {
 namespace {
-
-// Runs f and appends (name, seconds) to the timings.
-template <class F>
-void timed(std::vector<std::pair<std::string, double>>& timings, const char* name, F&& f) {
-  const auto t0 = std::chrono::steady_clock::now();
-  f();
-  timings.emplace_back(name, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-}
 
 template <int D>
 std::unique_ptr<Container<D>> bounding_box_of_balls(const Packing<D>& packing) {
@@ -51,12 +43,17 @@ std::string PackingAnalysis::summary() const {
     else std::snprintf(b, sizeof b, "%.6f +- %.2g (%s)", v.vf.value, v.vf.std_error, v.method.c_str());
     return std::string(b);
   };
-  line("particles            %llu (%dD), r in [%.6g, %.6g], mean %.6g", static_cast<unsigned long long>(particles),
-       dimension, r_min, r_max, r_mean);
+  line("particles            %llu (%dD), %s in [%.6g, %.6g], mean %.6g", static_cast<unsigned long long>(particles),
+       dimension, radius_name.c_str(), r_min, r_max, r_mean);
+  if (!templates.empty()) {
+    std::string t;
+    for (const auto& [family, count] : templates) t += (t.empty() ? "" : ", ") + std::to_string(count) + " " + family;
+    line("templates            %s", t.c_str());
+  }
   line("container            %s%s", container.c_str(),
        container_from_particles ? " (bounding box of the particles)" : "");
-  line("VF reference ball    %.6f (r_ref = a = %.6g; %zu radii from r_max)", vf_reference, reference_radius,
-       vf_curve.size());
+  line("VF reference ball    %.6f (r_ref = a = %.6g; %zu radii from r_max%s)", vf_reference, reference_radius,
+       vf_curve.size(), radius_name == "r" ? "" : "; QMC for the particles it cuts");
   line("VF container         %s", estimate(vf_container).c_str());
   line("VF core              %s, 2 r_max = %.6g inside", estimate(vf_core).c_str(), vf_core.shrink);
   line("coordination z       %.4f (%.4f with walls), %llu rattlers, tol %.3g", coordination.mean_coordination,
@@ -65,7 +62,7 @@ std::string PackingAnalysis::summary() const {
   line("contacts             %llu between particles, %llu with walls",
        static_cast<unsigned long long>(coordination.contacts),
        static_cast<unsigned long long>(coordination.wall_contacts));
-  line("max overlap / gap    %.3g / %.3g r_min", max_overlap_rel, max_contact_gap_rel);
+  line("max overlap / gap    %.3g / %.3g %s_min", max_overlap_rel, max_contact_gap_rel, radius_name.c_str());
   auto eigen = [&](const char* name, const FabricTensor& f) {
     std::string v;
     for (const double e : f.eigenvalues) {
@@ -85,12 +82,18 @@ std::string PackingAnalysis::summary() const {
   for (std::size_t a = 0; a < projections.ks.size(); ++a)
     line("K-S projections %c    D = %.4f, p = %.3g vs %s", axes[a], projections.ks[a].d, projections.ks[a].p,
          projections.reference.c_str());
-  if (!distribution.empty())
+  if (!distribution.empty() && radii_fit.computed())
     line("radii test           %s vs %s", radii_fit.describe().c_str(), distribution.c_str());
+  else if (!distribution.empty())
+    line("size tests           per template, in the validation below (%s)", distribution.c_str());
   if (!rdf.g.empty()) {
     const auto peak = std::max_element(rdf.g.begin(), rdf.g.end()) - rdf.g.begin();
     line("g(r)                 max %.3f at r = %.3f <d>, %llu reference particles", rdf.g[peak], rdf.r[peak],
          static_cast<unsigned long long>(rdf.reference_particles));
+  }
+  if (orientation) {
+    line("orientation order    S = %.4f (body x axes; 0 isotropic, 1 parallel)", orientation_order);
+    eigen("orientation tensor  ", *orientation);
   }
   if (validation) {
     s += '\n';
@@ -131,15 +134,15 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
   auto& t = a.timings;
 
   if (options.validate)
-    timed(t, "validate",
+    timed_step(t, "validate",
           [&] { a.validation = validate_packing(packing, *container, dist_or_null, options.contact_tolerance); });
 
-  timed(t, "contacts", [&] {
+  timed_step(t, "contacts", [&] {
     a.coordination = contact_stats(packing, container, options.contact_tolerance);
     a.max_overlap_rel = a.coordination.max_overlap_rel;
   });
   std::vector<PairContact> contacts;
-  timed(t, "contact network", [&] {
+  timed_step(t, "contact network", [&] {
     contacts = find_pair_contacts(packing, options.contact_tolerance);
     for (const PairContact& c : contacts) a.max_contact_gap_rel = std::max(a.max_contact_gap_rel, std::abs(c.gap));
     if (a.r_min > 0.0) a.max_contact_gap_rel /= a.r_min;
@@ -148,7 +151,7 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
     a.projections = relative_projections(packing, contacts, options.projection_bins);
   });
 
-  timed(t, "homogeneity", [&] {
+  timed_step(t, "homogeneity", [&] {
     a.homogeneity = centre_homogeneity(packing, container->bounds(), a.r_max);
     if (dist_or_null != nullptr) {
       a.distribution = dist_or_null->describe();
@@ -164,7 +167,7 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
     }
   });
 
-  timed(t, "volume fraction", [&] {
+  timed_step(t, "volume fraction", [&] {
     const Vec<D> c = container->interior_point();
     const Vec<D> shown = c + container->origin();  // reported in absolute coordinates
     a.reference_center.assign(shown.data(), shown.data() + D);
@@ -179,7 +182,7 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
     a.vf_core = vf_region(packing, *container, 2.0 * a.r_max, options.qmc);
   });
 
-  timed(t, "g(r)", [&] { a.rdf = radial_distribution(packing, *container, options.rdf); });
+  timed_step(t, "g(r)", [&] { a.rdf = radial_distribution(packing, *container, options.rdf); });
   return a;
 }
 

@@ -49,6 +49,10 @@ struct PackingAnalysis {
   int dimension = 3;
   std::uint64_t particles = 0;          ///< all balls, including any with non-finite data
   double r_min = 0.0, r_max = 0.0, r_mean = 0.0;  ///< of the positive finite radii; r_mean by count
+  /// What r_min, r_max, r_mean, z(xi) and g(r)'s <d> are radii of: "r" (spheres), or "r_eq" for a
+  /// packing of shapes (the radius of the ball of the same volume, contact/shape_analysis.hpp).
+  std::string radius_name = "r";
+  std::vector<std::pair<std::string, std::uint64_t>> templates;  ///< shapes: family and count per template id
   std::string container;                ///< description
   bool container_from_particles = false;  ///< no container given: the bounding box of the balls
   double container_measure = 0.0;
@@ -76,6 +80,11 @@ struct PackingAnalysis {
   RadiiFit radii_fit;                    ///< finite radii against it: validate's own test (not computed without one)
 
   RadialDistribution rdf;
+  /// Shapes: the orientation tensor <u u^T> of the body x axes (fabric.hpp's per-contact form of
+  /// the axes; trace 1) and the nematic order S = (D lambda_max - 1) / (D - 1): 0 for isotropic
+  /// orientations (to ~1/sqrt(N)), 1 for parallel axes.
+  std::optional<FabricTensor> orientation;
+  double orientation_order = 0.0;
   std::optional<ValidationReport> validation;
   std::vector<std::pair<std::string, double>> timings;  ///< seconds per part (not deterministic)
 

@@ -106,7 +106,12 @@ class SphereParticles {
   const std::vector<double>& reach_radii() const { return p_.radii; }
   bool finite(std::size_t i) const { return std::isfinite(p_.radii[i]) && p_.centers[i].allFinite(); }
   double unit(std::size_t i) const { return p_.radii[i]; }
-  double overlap(std::size_t i, std::size_t j) const { return p_.radii[i] + p_.radii[j] - (p_.centers[i] - p_.centers[j]).norm(); }
+  double overlap(std::size_t i, std::size_t j, Vec<D>* normal) const {
+    const Vec<D> d = p_.centers[j] - p_.centers[i];
+    const double len = d.norm();
+    if (normal) *normal = len > 0.0 ? Vec<D>(d / len) : Vec<D>::Zero();
+    return p_.radii[i] + p_.radii[j] - len;
+  }
   double protrusion(std::size_t i, double unit) const { return containment_.signed_distance(p_.centers[i], unit) + p_.radii[i]; }
   int template_of(std::size_t) const { return 0; }
   double size_of(std::size_t i) const { return p_.radii[i]; }

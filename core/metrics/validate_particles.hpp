@@ -5,7 +5,9 @@
 //  * every particle: finite, its size within its law's range, inside the container up to
 //    tol * its length unit (the radius; a shape's circumscribed radius);
 //  * every pair whose reach boxes meet (CellList: this file's own broad phase, never the
-//    packer's grid): an overlap beyond tol * the smaller length unit; |gap| <= that is a contact;
+//    packer's grid): an overlap beyond tol * the smaller length unit; gap <= that is a contact
+//    (contacts.hpp's rule: overlapping pairs count too), and so is a particle whose gap to the
+//    boundary is <= tol * its unit; on request the contacts are listed (contact_network.hpp);
 //  * the sizes of each template against its law (radii_fit.hpp) and, with two templates or
 //    more, the counts per template against the requested shares (chi-square); the tests share
 //    the level alpha (Bonferroni), so a correct packing fails with probability below alpha;
@@ -16,7 +18,8 @@
 //   size(), centers(), reach_radii()   the balls the broad phase indexes (non-finite ones left out)
 //   finite(i)                          position, size and length unit finite
 //   unit(i)                            the length unit (may be <= 0 for a broken sphere: reported)
-//   overlap(i, j)                      penetration depth, > 0 when the pair overlaps (absolute)
+//   overlap(i, j, normal*)             penetration depth, > 0 when the pair overlaps (absolute); with
+//                                      a normal to fill, the unit contact normal from i towards j
 //   protrusion(i, u)                   how far i reaches beyond the boundary, <= 0 inside (absolute;
 //                                      u: its length unit, as the engine scales it)
 //   template_of(i), size_of(i)         the template id and the size drawn from its law
@@ -31,6 +34,7 @@
 #include <vector>
 
 #include "core/metrics/cell_list.hpp"
+#include "core/metrics/contact_network.hpp"
 #include "core/metrics/validate.hpp"
 #include "core/sampling/chi_square_test.hpp"
 
@@ -70,13 +74,34 @@ class WorstIssues {
 
 }  // namespace validation_detail
 
+/// Sorts the pairs of a network by (i, j), their normals with them.
+template <int D>
+void sort_by_pair(ContactNetwork<D>& net) {
+  std::vector<std::size_t> order(net.pairs.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const PairContact &x = net.pairs[a], &y = net.pairs[b];
+    return x.i != y.i ? x.i < y.i : x.j < y.j;
+  });
+  ContactNetwork<D> sorted;
+  sorted.pairs.reserve(order.size());
+  sorted.normals.reserve(order.size());
+  for (const std::size_t k : order) {
+    sorted.pairs.push_back(net.pairs[k]);
+    sorted.normals.push_back(net.normals[k]);
+  }
+  net.pairs = std::move(sorted.pairs);
+  net.normals = std::move(sorted.normals);
+}
+
 /// The verdict of `particles` with the packer's allowance `tolerance` (relative to the length
 /// unit) against what was `requested` per template id (empty: only a size <= 0 is an issue).
-/// Throws std::invalid_argument for a tolerance or alpha out of range, and for a template id the
-/// request does not have.
+/// With `network`, the contacts are also listed there. Throws std::invalid_argument for a
+/// tolerance or alpha out of range, and for a template id the request does not have.
 template <int D, class Particles>
 ValidationReport validate_particles(const Particles& particles, double tolerance,
-                                    const std::vector<RequestedTemplate>& requested, double alpha) {
+                                    const std::vector<RequestedTemplate>& requested, double alpha,
+                                    ContactNetwork<D>* network = nullptr) {
   using validation_detail::WorstIssues;
   if (!(tolerance >= 0.0) || !std::isfinite(tolerance))
     throw std::invalid_argument("validation: the tolerance must be finite and >= 0");
@@ -127,7 +152,10 @@ ValidationReport validate_particles(const Particles& particles, double tolerance
       ++rep.outside_count;
       worst.add({"outside", i, -1, out});
     }
-    if (std::abs(out) <= tolerance) ++rep.wall_contacts;
+    if (out >= -tolerance) {
+      ++rep.wall_contacts;
+      if (network) network->walls.push_back({static_cast<std::uint32_t>(k), -out * u});
+    }
   }
 
   // Every pair that can overlap or touch: the reach boxes grown by the tolerance.
@@ -135,16 +163,23 @@ ValidationReport validate_particles(const Particles& particles, double tolerance
   cells.for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
     ++rep.pairs_checked;
     const double u = scale(std::min(particles.unit(i), particles.unit(j)));
-    const double overlap = particles.overlap(i, j) / u;
+    Vec<D> normal;
+    const double overlap = particles.overlap(i, j, network ? &normal : nullptr) / u;
     rep.max_overlap_rel = std::max(rep.max_overlap_rel, overlap);
     if (overlap > tolerance) {
       ++rep.overlap_count;
       worst.add({"overlap", i, j, overlap});
-    } else if (overlap >= -tolerance) {
+    }
+    if (overlap >= -tolerance) {
       ++rep.contacts;
       rep.max_contact_gap_rel = std::max(rep.max_contact_gap_rel, std::abs(overlap));
+      if (network) {
+        network->pairs.push_back({i, j, -overlap * u});
+        network->normals.push_back(normal);
+      }
     }
   });
+  if (network) sort_by_pair(*network);
 
   // Sizes per template and the mix of templates.
   rep.sizes.resize(requested.size());

@@ -1,0 +1,37 @@
+#include "cli/pack_check.hpp"
+
+#include <string>
+
+#include "core/io/analysis_json.hpp"
+
+namespace fp {
+
+PackCheck pack_check_of(const PackingAnalysis& a) {
+  PackCheck c;
+  c.validation = *a.validation;
+  c.volume_fraction = a.vf_container.vf.value;
+  c.timing_name = "metrics";
+  const ContactStats& cs = a.coordination;
+  const double n = static_cast<double>(a.particles);
+  c.metrics = {{"volume_fraction_core", a.vf_core.vf.value},
+               {"volume_fraction_reference_sphere", a.vf_reference},
+               {"reference_sphere_radius", a.reference_radius},
+               {"mean_coordination_with_walls", cs.mean_coordination_with_walls},
+               {"rattler_fraction", n > 0 ? static_cast<double>(cs.rattlers) / n : 0.0},
+               {"max_overlap_over_rmin", a.max_overlap_rel},
+               {"radii_statistic", c.validation.radii().statistic},
+               {"radii_pvalue", c.validation.radii().p}};
+  const char* axis_names[] = {"x", "y", "z"};
+  for (std::size_t k = 0; k < a.reference_center.size() && k < 3; ++k)
+    c.metrics.emplace_back(std::string("reference_sphere_center_") + axis_names[k], a.reference_center[k]);
+  if (a.orientation) c.metrics.emplace_back("orientation_order", a.orientation_order);
+  c.counters = {{"rattlers", cs.rattlers}};
+  c.info = {{"radii_test", c.validation.radii().test}};
+  c.analysis_json = analysis_json(a);
+  std::string table = "  " + a.summary();
+  for (std::size_t at = table.find('\n'); at != std::string::npos; at = table.find('\n', at + 3)) table.insert(at + 1, "  ");
+  c.summary_lines = table + "\n";
+  return c;
+}
+
+}  // namespace fp
