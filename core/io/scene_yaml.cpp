@@ -617,6 +617,14 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
     const double t = x->number();
     if (!(t > 0 && t < 1e-3)) x->fail("must be in (0, 1e-3): it is relative to the particle radii (got " + x->node().Scalar() + ")");
     p.contact_tolerance = t;
+    // One tolerance for every particle kind: for particle templates it is the minimisation's
+    // gap_tolerance (the same setting under the name of the solver that needs it most).
+    if (shapes) {
+      const auto mini = m.find("minimisation");
+      if (mini && mini->map().find("gap_tolerance") && p.minimisation.gap_tolerance != t)
+        x->fail("is the tolerance of packer.minimisation.gap_tolerance too, which this scene sets to another value: give one of them");
+      p.minimisation.gap_tolerance = t;
+    }
   }
   if (auto x = m.find("grid_cell_factor")) {
     const double f = x->number();

@@ -264,6 +264,19 @@ TEST(SceneYamlShapes, MinimisationOptions) {
   EXPECT_EQ(p.packer.minimisation.algorithm, defaults.algorithm);
 }
 
+// packer.contact_tolerance means the same for every particle kind: for templates it is the
+// minimisation's gap_tolerance (one setting, two names); two different values are refused.
+TEST(SceneYamlShapes, ContactToleranceIsTheToleranceOfTemplatesToo) {
+  const Scene s = parse_scene(kBox3 + kCapsules + "packer: {contact_tolerance: 1e-4}\n", kFile);
+  EXPECT_EQ(s.packer.minimisation.gap_tolerance, 1e-4);
+  EXPECT_EQ(s.packer.contact_tolerance, 1e-4);
+  const Scene both = parse_scene(kBox3 + kCapsules + "packer: {contact_tolerance: 1e-5, minimisation: {gap_tolerance: 1e-5}}\n", kFile);
+  EXPECT_EQ(both.packer.minimisation.gap_tolerance, 1e-5);
+  expect_error(kBox3 + kCapsules + "packer: {minimisation: {gap_tolerance: 1e-5}, contact_tolerance: 1e-4}\n", 6,
+               "packer.contact_tolerance", {"gap_tolerance", "give one of them"});
+  EXPECT_EQ(parse_scene(kBox3 + kCapsules, kFile).packer.minimisation.gap_tolerance, MinimisationOptions{}.gap_tolerance);
+}
+
 TEST(SceneYamlShapes, StopPackerAndOutputSectionsStillApply) {
   const Scene s = parse_scene(kBox3 + kCapsules +
                                   "seed: 9\n"
