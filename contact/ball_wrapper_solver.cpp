@@ -182,53 +182,109 @@ inline bool circle_of(const Piece<3>& pa, const Piece<3>& pb, double r0, Arc& ar
   return true;
 }
 
-/// The exposed intervals of the circle against `others` (every piece of its two bodies), appended
-/// to `exposed`. Covered means strictly inside a piece shrunk by twice the overlap tolerance, so a
-/// position the final check (overlap <= kOverlapTol) would keep is never dropped.
-inline void find_exposure(Arc& arc, const Vec3& a_center, double r0, double overlap_tol, std::vector<const Piece<3>*>& others,
+/// The exposed intervals of the circle against `others` (every piece of its two bodies, and of the
+/// obstacles near them), appended to `exposed`. Covered means strictly inside a piece shrunk by
+/// its Cover::shrink: twice the overlap tolerance for the two bodies' own pieces (a position the
+/// final check, overlap <= kOverlapTol, would keep is never dropped), the front's tolerance for an
+/// obstacle's (a position the front would keep is never dropped).
+/// A piece that covers circles, and by how much it is shrunk first (an absolute length).
+struct Cover {
+  const Piece<3>* piece;
+  double shrink;
+};
+
+/// The pieces of one obstacle particle, shrunk alike, all within `reach` of `center` (its
+/// circumscribed radius plus the mobile's): a circle farther than that from the centre meets none.
+struct CoverGroup {
+  Vec3 center;
+  double reach;
+  int first, count;  ///< in the pieces
+  double shrink;
+};
+
+inline void find_exposure(Arc& arc, const Vec3& a_center, double r0, std::vector<Cover>& others,
+                          const std::vector<Piece<3>>& pieces, const std::vector<CoverGroup>& groups,
                           std::vector<std::array<double, 2>>& exposed) {
   arc.exposure = Arc::Exposure::None;
   const double inv = 1.0 / arc.scale, rho2 = arc.rho * arc.rho;
   // Covered intervals: |y(t) - p|^2 < re^2, i.e. A cos t + B sin t < C.
   thread_local std::vector<std::array<double, 2>> covered;
   covered.clear();
-  for (std::size_t i = 0; i < others.size(); ++i) {
-    const Piece<3>* e = others[i];
-    const double re = (e->radius + r0 - 2 * overlap_tol * e->size) * inv;
-    if (!(re > 0)) continue;
+  // The interval(s) a cover hides, in [0, 4); true when it hides the whole circle.
+  const auto hidden = [&](const Cover& cover, std::array<std::array<double, 2>, 2>& iv, int& n) {
+    n = 0;
+    const Piece<3>* e = cover.piece;
+    const double re = (e->radius + r0 - cover.shrink) * inv;
+    if (!(re > 0)) return false;
     const Vec3 w = arc.y1 - (e->center - a_center) * inv;
     const double wn = w.norm();
     const double C = (re - wn) * (re + wn) - rho2;
-    if (C <= -2 * arc.rho * wn) continue;  // M <= 2 rho |w|: e misses the circle
+    if (C <= -2 * arc.rho * wn) return false;  // M <= 2 rho |w|: e misses the circle
     const double A = 2 * arc.rho * arc.u.dot(w), B = 2 * arc.rho * arc.v.dot(w);
     const double M = std::sqrt(A * A + B * B);
-    if (C <= -M) continue;
+    if (C <= -M) return false;
     const double k = C / M;
-    if (!(k < 1 - 1e-15)) {  // the whole circle is inside e, which is tried first for the next circle
-      std::swap(others[0], others[i]);
-      return;
-    }
+    if (!(k < 1 - 1e-15)) return true;
     // A c + B s < C: the arc from the point turned +acos(k) from (A, B), counter-clockwise, to
     // the one turned -acos(k).
     const auto ends = points_at(A, B, M, k);
     const double start = turn_of(ends[0][0], ends[0][1]), end = turn_of(ends[1][0], ends[1][1]);
     if (start <= end) {
-      covered.push_back({start, end});
+      iv[n++] = {start, end};
     } else {
-      covered.push_back({start, kFullTurn});
-      covered.push_back({0.0, end});
+      iv[n++] = {start, kFullTurn};
+      iv[n++] = {0.0, end};
     }
+    return false;
+  };
+  std::array<std::array<double, 2>, 2> iv;
+  int n = 0;
+  for (std::size_t i = 0; i < others.size(); ++i) {
+    if (hidden(others[i], iv, n)) {  // the whole circle is inside, which is tried first for the next circle
+      std::swap(others[0], others[i]);
+      return;
+    }
+    for (int q = 0; q < n; ++q) covered.push_back(iv[static_cast<std::size_t>(q)]);
   }
+  // What the two bodies leave exposed: the complement of what their pieces hide.
   std::sort(covered.begin(), covered.end());
-  // The complement in [0, 4), widened a little: the final check decides at the edges.
-  constexpr double kSlack = 1e-7;
-  arc.first = static_cast<int>(exposed.size());
+  thread_local std::vector<std::array<double, 2>> open, next;
+  open.clear();
   double at = 0.0;
   for (const auto& c : covered) {
-    if (c[0] > at) exposed.push_back({at - kSlack, c[0] + kSlack});
+    if (c[0] > at) open.push_back({at, c[0]});
     at = std::max(at, c[1]);
   }
-  if (at < kFullTurn) exposed.push_back({at - kSlack, kFullTurn + kSlack});
+  if (at < kFullTurn) open.push_back({at, kFullTurn});
+  if (!open.empty() && !groups.empty()) {
+    // Then what the obstacles leave of it; one farther from the circle
+    // (in the world) than its reach hides none of it.
+    const Vec3 centre = a_center + arc.scale * arc.y1, normal = arc.u.cross(arc.v);
+    const double radius = arc.scale * arc.rho;
+    for (const CoverGroup& g : groups) {
+      const Vec3 d = g.center - centre;
+      const double off = d.dot(normal), in = (d - off * normal).norm() - radius;
+      if (off * off + in * in >= g.reach * g.reach) continue;
+      for (int c = g.first; c < g.first + g.count && !open.empty(); ++c) {
+        if (hidden(Cover{&pieces[static_cast<std::size_t>(c)], g.shrink}, iv, n)) return;
+        for (int q = 0; q < n; ++q) {
+          const auto [lo, hi] = iv[static_cast<std::size_t>(q)];
+          next.clear();
+          for (const auto& o : open) {
+            if (o[1] <= lo || o[0] >= hi) { next.push_back(o); continue; }
+            if (o[0] < lo) next.push_back({o[0], lo});
+            if (o[1] > hi) next.push_back({hi, o[1]});
+          }
+          open.swap(next);
+        }
+      }
+      if (open.empty()) return;
+    }
+  }
+  // Widened a little: the final check decides at the edges.
+  constexpr double kSlack = 1e-7;
+  arc.first = static_cast<int>(exposed.size());
+  for (const auto& o : open) exposed.push_back({o[0] - kSlack, o[1] + kSlack});
   arc.count = static_cast<int>(exposed.size()) - arc.first;
   if (arc.count > 0) arc.exposure = Arc::Exposure::Intervals;
 }
@@ -260,6 +316,28 @@ struct LociCache {
   std::unordered_map<std::uint64_t, std::pair<int, int>> pair_arcs;  ///< [first, first + count) in arcs
   std::vector<Arc> arcs;
   std::vector<std::array<double, 2>> intervals;
+  // 3D: the placement's other particles made of balls (ContactSolver::set_obstacles) and the
+  // front's tolerance: the pair circles are cut down to what they leave exposed too.
+  std::vector<const Particle<D>*> obstacles;
+  std::vector<int> obstacle_block;  ///< per obstacle: its block, -1 until built for this mobile
+  std::vector<double> obstacle_radius;  ///< per obstacle: its circumscribed radius
+  double obstacle_tol = 0.0;
+
+  const void* obstacles_owner = nullptr;  ///< the solver that set them (others see none)
+
+  /// New obstacles: the circles cut by the old ones are forgotten (the loci stay).
+  void set_obstacles(const void* owner, std::span<const Particle<D>* const> given, double tol) {
+    obstacles_owner = owner;
+    obstacles.clear();
+    for (const Particle<D>* q : given)
+      if (std::strcmp(q->shape->kind(), ClusterShape<D>::kKind) == 0 || std::strcmp(q->shape->kind(), SphereShape<D>::kKind) == 0)
+        obstacles.push_back(q);
+    obstacle_radius.clear();
+    for (const Particle<D>* q : obstacles) obstacle_radius.push_back(q->bounding_radius());
+    obstacle_block.assign(obstacles.size(), -1);
+    obstacle_tol = tol;
+    pair_arcs.clear(), arcs.clear(), intervals.clear();
+  }
 
   /// Forgets everything unless `m` is the mobile the loci were folded for.
   void use(const Mobile<D>& m) {
@@ -271,6 +349,7 @@ struct LociCache {
     r0 = 0.5 * smallest;
     blocks.clear(), pieces.clear(), live.clear();
     pair_arcs.clear(), arcs.clear(), intervals.clear();
+    obstacle_block.assign(obstacles.size(), -1);
   }
 
   /// The index of a particle body's block, built if new.
@@ -296,12 +375,39 @@ struct LociCache {
   std::pair<int, int> arcs_of(int i, int j, double overlap_tol) requires(D == 3) {
     const std::uint64_t key = (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint32_t>(j);
     if (auto it = pair_arcs.find(key); it != pair_arcs.end()) return it->second;
+    // The obstacles a mobile touching both bodies can reach, as blocks (built first: building
+    // one moves the pieces and blocks).
+    thread_local std::vector<std::pair<int, double>> near;  // obstacle, shrink of its pieces
+    near.clear();
+    obstacle_block.resize(obstacles.size(), -1);
+    for (std::size_t o = 0; o < obstacles.size(); ++o) {
+      const Particle<D>* q = obstacles[o];
+      const Block& bi = blocks[static_cast<std::size_t>(i)];
+      const Block& bj = blocks[static_cast<std::size_t>(j)];
+      if (q == bi.particle || q == bj.particle) continue;
+      const double rq = obstacle_radius[o];
+      const double ri = bi.radius + 2 * radius + rq, rj = bj.radius + 2 * radius + rq;
+      if ((q->pose.position - bi.center).squaredNorm() >= ri * ri || (q->pose.position - bj.center).squaredNorm() >= rj * rj)
+        continue;
+      if (obstacle_block[o] < 0) obstacle_block[o] = block(Body<D>::of_particle(*q));
+      near.push_back({static_cast<int>(o), obstacle_tol * std::min(radius, rq)});
+    }
     const Block& bi = blocks[static_cast<std::size_t>(i)];
     const Block& bj = blocks[static_cast<std::size_t>(j)];
-    thread_local std::vector<const Piece<D>*> others;
+    thread_local std::vector<Cover> others;
     others.clear();
     for (const Block* k : {&bi, &bj})
-      for (int e = k->first; e < k->first + k->count; ++e) others.push_back(&pieces[static_cast<std::size_t>(e)]);
+      for (int e = k->first; e < k->first + k->count; ++e) {
+        const Piece<D>& p = pieces[static_cast<std::size_t>(e)];
+        others.push_back({&p, 2 * overlap_tol * p.size});
+      }
+    thread_local std::vector<CoverGroup> groups;
+    groups.clear();
+    for (const auto& [o, shrink] : near) {
+      const Particle<D>* q = obstacles[static_cast<std::size_t>(o)];
+      const Block& k = blocks[static_cast<std::size_t>(obstacle_block[static_cast<std::size_t>(o)])];
+      groups.push_back({q->pose.position, obstacle_radius[static_cast<std::size_t>(o)] + radius, k.first, k.count, shrink});
+    }
     const int first = static_cast<int>(arcs.size());
     for (int x = bi.live_first; x < bi.live_first + bi.live_count; ++x)
       for (int y = bj.live_first; y < bj.live_first + bj.live_count; ++y) {
@@ -312,7 +418,7 @@ struct LociCache {
         Arc arc;
         arc.a = a, arc.b = b;
         if (!circle_of(pa, pb, r0, arc)) continue;
-        if (!arc.careful) find_exposure(arc, pa.center, r0, overlap_tol, others, intervals);
+        if (!arc.careful) find_exposure(arc, pa.center, r0, others, pieces, groups, intervals);
         if (arc.careful || arc.exposure == Arc::Exposure::Intervals) arcs.push_back(arc);
       }
     return pair_arcs[key] = {first, static_cast<int>(arcs.size()) - first};
@@ -331,12 +437,31 @@ struct LociCache {
   }
 };
 
+template <int D>
+LociCache<D>& loci_cache() {
+  thread_local LociCache<D> cache;
+  return cache;
+}
+
 }  // namespace
+
+template <int D>
+void BallWrapperSolver<D>::set_obstacles(std::span<const Particle<D>* const> obstacles, double tol) const {
+  if constexpr (D == 3) loci_cache<D>().set_obstacles(this, obstacles, tol);
+}
+
+template <int D>
+BallWrapperSolver<D>::~BallWrapperSolver() {
+  // The cache outlives the solver: its obstacles (the packing's particles) must not.
+  LociCache<D>& cache = loci_cache<D>();
+  if (cache.obstacles_owner == this) cache.set_obstacles(nullptr, {}, 0.0);
+}
 
 template <int D>
 int BallWrapperSolver<D>::solve(std::span<const Body<D>> fixed, const Mobile<D>& mobile, std::span<Placement<D>> out) const {
   if (fixed.size() != static_cast<std::size_t>(D) || out.empty()) return 0;
-  thread_local LociCache<D> cache;
+  LociCache<D>& cache = loci_cache<D>();
+  if (cache.obstacles_owner != this && !cache.obstacles.empty()) cache.set_obstacles(nullptr, {}, 0.0);
   thread_local std::vector<Piece<D>> walls;         // this call's wall loci
   thread_local std::array<std::vector<int>, D> live;  // per body: its live loci (walls: ~index - 1)
   thread_local std::vector<Vec<D>> found;

@@ -38,6 +38,13 @@ class BallWrapperSolver final : public ContactSolver<D> {
   /// Every fixed body is a wall, a sphere or a cluster, and so is the mobile (by its shape's kind;
   /// a mobile without a shape is a ball of its radius). Returns up to out.size() distinct positions.
   int solve(std::span<const Body<D>> fixed, const Mobile<D>& mobile, std::span<Placement<D>> out) const override;
+  BallWrapperSolver() = default;
+  ~BallWrapperSolver() override;
+  BallWrapperSolver(const BallWrapperSolver&) = delete;
+  BallWrapperSolver& operator=(const BallWrapperSolver&) = delete;
+  /// 3D: spheres and clusters among them also cut the pair circles of two particle bodies, so a
+  /// third body is tried only where the mobile would overlap no obstacle beyond `tol`.
+  void set_obstacles(std::span<const Particle<D>* const> obstacles, double tol) const override;
 };
 
 }  // namespace fp

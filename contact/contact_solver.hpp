@@ -25,6 +25,14 @@ class ContactSolver {
   /// return 0.
   virtual int solve(std::span<const Body<D>> fixed, const Mobile<D>& mobile,
                     std::span<Placement<D>> out) const = 0;
+  /// The other particles of the placement the next solves serve (the front's V): a position
+  /// overlapping one of them by more than tol x the smaller circumscribed radius is rejected by
+  /// the front anyway, so a solver may leave it out, and search only where they leave room. A
+  /// solver that ignores this loses nothing. The pointers stay valid until the next call.
+  virtual void set_obstacles(std::span<const Particle<D>* const> obstacles, double tol) const {
+    (void)obstacles;
+    (void)tol;
+  }
 };
 
 }  // namespace fp

@@ -65,6 +65,7 @@ SolverRegistry<D>::SolverRegistry(const NarrowPhase<D>& narrow_phase, const Mini
 template <int D>
 void SolverRegistry<D>::add_pair(const std::string& fixed_kind, const std::string& mobile_kind,
                                  std::shared_ptr<const ContactSolver<D>> solver) {
+  if (std::find(registered_.begin(), registered_.end(), solver.get()) == registered_.end()) registered_.push_back(solver.get());
   pairs_[{fixed_kind, mobile_kind}].push_back(std::move(solver));
   picked_.clear();
 }

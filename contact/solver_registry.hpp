@@ -51,6 +51,11 @@ class SolverRegistry {
   /// add_pair for every kind of wall.
   void add_walls(const std::string& mobile_kind, const std::shared_ptr<const ContactSolver<D>>& solver);
 
+  /// Passes the placement's other particles to every solver (ContactSolver::set_obstacles).
+  void set_obstacles(std::span<const Particle<D>* const> obstacles, double tol) const {
+    default_->set_obstacles(obstacles, tol);
+    for (const ContactSolver<D>* s : registered_) s->set_obstacles(obstacles, tol);
+  }
   /// The solver for this problem (never null).
   const ContactSolver<D>& pick(std::span<const Body<D>> fixed, const Mobile<D>& mobile) const;
   /// Its name for reports: "analytic sphere" or "minimisation" (or the class of an override).
@@ -71,6 +76,8 @@ class SolverRegistry {
   mutable std::vector<std::pair<PickKey, const ContactSolver<D>*>> picked_;
   /// Per pair, its solvers in registration order (the last one first in precedence).
   std::map<std::pair<std::string, std::string>, std::vector<std::shared_ptr<const ContactSolver<D>>>> pairs_;
+  /// Every solver of pairs_, once.
+  std::vector<const ContactSolver<D>*> registered_;
 };
 
 }  // namespace fp

@@ -183,6 +183,10 @@ class ShapeModel {
     r0_ = radius(s0);
     R_ = radius(d);
     fixed_[0] = Body<D>::of_particle(particle(s0), s0);
+    // V: the solvers may leave out positions that overlap it (the front would reject them).
+    obstacles_.clear();
+    for (const front_parts::Neighbour& n : *nb_) obstacles_.push_back(&particle(n.id));
+    registry_.set_obstacles(obstacles_, tol_);
   }
   /// A wall (walls_near limited them to r0 + 2R) or a particle a mobile touching s0 can reach.
   bool reachable(int j) const {
@@ -310,6 +314,7 @@ class ShapeModel {
   double r_min_, r_max_;
   NeighbourGrid<D> grid_;
   Result* res_ = nullptr;
+  std::vector<const Particle<D>*> obstacles_;  ///< V of the placement in progress
 
   // The placement in progress (begin_placement).
   std::span<const Body<D>> bodies_;

@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <deque>
 
 #include "contact/ball_wrapper_solver.hpp"
 #include "contact/sphere_contact_solver.hpp"
@@ -219,6 +220,75 @@ void minimisation_round(int trials, std::uint64_t seed) {
 
 TEST(BallWrapperSolver, FindsEveryPositionOfTheMinimisation2D) { minimisation_round<2>(60, 7200); }
 TEST(BallWrapperSolver, FindsEveryPositionOfTheMinimisation3D) { minimisation_round<3>(40, 8200); }
+
+// ============================================ 3b. obstacles: only what the front would reject
+
+// With obstacles (the front's V), the solver returns exactly the positions it returns without
+// them that overlap no obstacle beyond tol x the smaller circumscribed radius (checked here by
+// the member balls' own distances): nothing the front would keep is lost. Obstacles are copies
+// of the mobile near the positions found, so that they cut some and spare others.
+TEST(BallWrapperSolver, ObstaclesLeaveOutExactlyWhatTheFrontRejects) {
+  constexpr double kFrontTol = 1e-6;
+  NarrowPhase<3> np;
+  const BallWrapperSolver<3> solver;
+  Rng rng(8700);
+  int trials = 0, kept = 0, cut = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    Problem<3> pb;
+    std::array<Kind, 3> kinds;
+    kinds.fill(Kind::Cluster);
+    if (!construct_problem<3>(pb, np, Kind::Cluster, kinds, Sizes{}, rng)) continue;
+    Out<3> all;
+    solver.set_obstacles({}, kFrontTol);
+    const int n_all = solver.solve(pb.span(), pb.mobile(), all);
+    if (n_all == 0 || n_all == static_cast<int>(all.size())) continue;  // a full buffer may hide positions
+    const double R = pb.mobile_shape->bounding_radius();
+    std::deque<Particle<3>> obstacles;
+    for (int k = 0; k < 3; ++k) {
+      Particle<3> q;
+      q.shape = pb.mobile_shape;
+      q.pose.rotation = random_rotation<3>(rng);
+      Vec3 dir = Vec3(rng.uniform01() - 0.5, rng.uniform01() - 0.5, rng.uniform01() - 0.5).normalized();
+      q.pose.position = all[static_cast<std::size_t>(rng.uniform01() * n_all) % n_all].position + (0.8 + 1.4 * rng.uniform01()) * R * dir;
+      obstacles.push_back(q);
+    }
+    // The front's verdict for each position: the largest overlap of member balls, relative.
+    const auto overlap_rel = [&](const Vec3& x, const Particle<3>& q) {
+      double worst = -1e300;
+      for (const BallL<3>& a : balls_of<3>(*pb.mobile_shape, pb.mobile_rotation, x))
+        for (const BallL<3>& b : balls_of<3>(*q.shape, q.pose.rotation, q.pose.position))
+          worst = std::max(worst, static_cast<double>(a.r + b.r - (a.c - b.c).norm()));
+      return worst / std::min(R, q.shape->bounding_radius());
+    };
+    std::vector<Vec3> expected;
+    bool ambiguous = false;
+    for (int i = 0; i < n_all; ++i) {
+      double worst = -1e300;
+      for (const Particle<3>& q : obstacles) worst = std::max(worst, overlap_rel(all[static_cast<std::size_t>(i)].position, q));
+      ambiguous = ambiguous || std::abs(worst - kFrontTol) < 1e-7;
+      if (worst <= kFrontTol) expected.push_back(all[static_cast<std::size_t>(i)].position);
+    }
+    if (ambiguous) continue;
+    ++trials;
+    std::vector<const Particle<3>*> pointers;
+    for (const Particle<3>& q : obstacles) pointers.push_back(&q);
+    solver.set_obstacles(pointers, kFrontTol);
+    Out<3> some;
+    const int n = solver.solve(pb.span(), pb.mobile(), some);
+    solver.set_obstacles({}, kFrontTol);
+    ASSERT_EQ(static_cast<std::size_t>(n), expected.size()) << "trial " << trial << pb.literal();
+    for (const Vec3& x : expected) {
+      const auto [q, dist] = closest<3>(first<3>(some, n), x);
+      EXPECT_LE(dist, 1e-12 * R) << "trial " << trial << ": a position no obstacle overlaps was left out";
+    }
+    kept += n;
+    cut += n_all - n;
+  }
+  std::printf("  3D clusters with obstacles: %d problems, %d positions kept, %d left out\n", trials, kept, cut);
+  EXPECT_GE(trials, 50);
+  EXPECT_GT(cut, 20);
+  EXPECT_GT(kept, 20);
+}
 
 // ========================================================= 4. spheres, and nothing to find
 
