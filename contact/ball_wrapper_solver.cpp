@@ -308,6 +308,7 @@ struct LociCache {
   std::vector<Ball<D>> mobile;  ///< mobile members: offset from the reference point, radius
   double r0 = 0.0;              ///< the common folded mobile radius: half the smallest member
   std::vector<Block> blocks;
+  std::unordered_map<const Particle<D>*, int> block_index;  ///< particle blocks by address
   std::vector<Piece<D>> pieces;
   std::vector<int> live;
   std::vector<Ball<D>> scratch;
@@ -347,17 +348,22 @@ struct LociCache {
     double smallest = mobile[0].radius;
     for (const Ball<D>& b : mobile) smallest = std::min(smallest, b.radius);
     r0 = 0.5 * smallest;
-    blocks.clear(), pieces.clear(), live.clear();
+    blocks.clear(), block_index.clear(), pieces.clear(), live.clear();
     pair_arcs.clear(), arcs.clear(), intervals.clear();
     obstacle_block.assign(obstacles.size(), -1);
   }
 
   /// The index of a particle body's block, built if new.
   int block(const Body<D>& b) {
-    for (std::size_t i = 0; i < blocks.size(); ++i) {
-      const Block& k = blocks[i];
-      if (k.particle == b.shaped && k.center == b.center && k.radius == b.radius) return static_cast<int>(i);
+    const auto same = [&](const Block& k) { return k.particle == b.shaped && k.center == b.center && k.radius == b.radius; };
+    if (b.shaped) {  // a particle: by its address (checked against its centre and radius)
+      if (const auto it = block_index.find(b.shaped); it != block_index.end() && same(blocks[static_cast<std::size_t>(it->second)]))
+        return it->second;
+    } else {
+      for (std::size_t i = 0; i < blocks.size(); ++i)
+        if (same(blocks[i])) return static_cast<int>(i);
     }
+    if (b.shaped) block_index[b.shaped] = static_cast<int>(blocks.size());
     Block k;
     k.particle = b.shaped, k.center = b.center, k.radius = b.radius;
     k.first = static_cast<int>(pieces.size());
@@ -468,6 +474,13 @@ int BallWrapperSolver<D>::solve(std::span<const Body<D>> fixed, const Mobile<D>&
   cache.use(mobile);
   const double r0 = cache.r0;
   if (!(r0 > 0)) return 0;
+  if constexpr (D == 3) {
+    // Two particle bodies first whose pair circles are all covered (by each other or by V, most
+    // pairs of a scan): no third body can add a position, and its loci need not be built.
+    if (!fixed[0].is_wall() && !fixed[1].is_wall() &&
+        cache.arcs_of(cache.block(fixed[0]), cache.block(fixed[1]), kOverlapTol).second == 0)
+      return 0;
+  }
   // Loci are named by an int: a particle's by its index in cache.pieces, a wall's by ~index
   // (negative) in `walls`. `all` lists every locus of each body, for the overlap check.
   walls.clear();
