@@ -20,8 +20,8 @@ struct PackCheck {
   std::vector<std::pair<std::string, double>> metrics;           ///< after the record's common metrics
   std::vector<std::pair<std::string, std::uint64_t>> counters;   ///< after the common counters
   std::vector<std::pair<std::string, std::string>> info;         ///< after the common info
-  std::string analysis_json;      ///< the full analysis (spheres), empty otherwise
-  std::string summary_lines;      ///< the kind's own lines of the summary, each "  name  value\n"
+  std::string analysis_json;      ///< the full analysis (analysis_json.hpp), embedded in the record
+  std::string summary_lines;      ///< the analysis' table, then the kind's own lines, each "  name  value\n"
 };
 
 /// The record's figures of an analysis (its validation included) and its table as summary lines.
