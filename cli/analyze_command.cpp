@@ -164,10 +164,8 @@ template <int D>
 int analyze(const std::optional<Scene>& scene, const ShapePacking<D>& P, const AnalyzeCommandOptions& o) {
   AnalysisOptions opt;
   opt.contact_tolerance = o.tolerance >= 0 ? o.tolerance : scene->packer.minimisation.gap_tolerance;
-  std::vector<std::string> families;
-  for (const ParticleTemplateSpec& t : scene->particle_templates) families.push_back(t.family);
   const std::vector<RequestedTemplate> requested = requested_templates(*scene);
-  const PackingAnalysis a = analyze_shape_packing<D>(P, *scene->container<D>(), requested, families, opt);
+  const PackingAnalysis a = analyze_shape_packing<D>(P, *scene, opt);
   std::vector<double> sizes;
   const bool one = requested.size() == 1 && requested[0].size;
   for (const Particle<D>& p : P.particles) sizes.push_back(one ? p.size : equivalent_radius<D>(p.shape->measure()));

@@ -40,9 +40,7 @@ PackCheck ShapePack<D>::check(const Scene& scene, const Result& res) {
   const Container<D>& container = *scene.container<D>();
   AnalysisOptions options;
   options.contact_tolerance = res.contact_tolerance;
-  std::vector<std::string> families;
-  for (const ParticleTemplateSpec& t : scene.particle_templates) families.push_back(t.family);
-  PackCheck c = pack_check_of(analyze_shape_packing<D>(res.packing, *scene.container<D>(), requested_templates(scene), families, options));
+  PackCheck c = pack_check_of(analyze_shape_packing<D>(res.packing, scene, options));
   const SolverCounters& s = res.solver;
   const std::vector<std::pair<std::string, std::uint64_t>> solver = {
       {"analytic_solves", s.analytic_solves}, {"minimisations", s.minimisations}, {"gap_evaluations", s.gap_evaluations},

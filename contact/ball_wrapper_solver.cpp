@@ -182,11 +182,6 @@ inline bool circle_of(const Piece<3>& pa, const Piece<3>& pb, double r0, Arc& ar
   return true;
 }
 
-/// The exposed intervals of the circle against `others` (every piece of its two bodies, and of the
-/// obstacles near them), appended to `exposed`. Covered means strictly inside a piece shrunk by
-/// its Cover::shrink: twice the overlap tolerance for the two bodies' own pieces (a position the
-/// final check, overlap <= kOverlapTol, would keep is never dropped), the front's tolerance for an
-/// obstacle's (a position the front would keep is never dropped).
 /// A piece that covers circles, and by how much it is shrunk first (an absolute length).
 struct Cover {
   const Piece<3>* piece;
@@ -202,6 +197,12 @@ struct CoverGroup {
   double shrink;
 };
 
+/// The exposed intervals of the circle, appended to `exposed`: what neither `others` (every
+/// piece of its two bodies) nor `groups` (the obstacles near them, their pieces in `pieces`)
+/// cover. Covered means strictly inside a piece shrunk first: by twice the overlap tolerance for
+/// the two bodies' own pieces (a position the final check, overlap <= kOverlapTol, would keep is
+/// never dropped), by the front's tolerance for an obstacle's (a position the front would keep is
+/// never dropped).
 inline void find_exposure(Arc& arc, const Vec3& a_center, double r0, std::vector<Cover>& others,
                           const std::vector<Piece<3>>& pieces, const std::vector<CoverGroup>& groups,
                           std::vector<std::array<double, 2>>& exposed) {
@@ -385,7 +386,6 @@ struct LociCache {
     // one moves the pieces and blocks).
     thread_local std::vector<std::pair<int, double>> near;  // obstacle, shrink of its pieces
     near.clear();
-    obstacle_block.resize(obstacles.size(), -1);
     for (std::size_t o = 0; o < obstacles.size(); ++o) {
       const Particle<D>* q = obstacles[o];
       const Block& bi = blocks[static_cast<std::size_t>(i)];

@@ -124,6 +124,15 @@ PackingAnalysis analyze_shape_packing(const ShapePacking<D>& packing, const Cont
   return a;
 }
 
+template <int D>
+PackingAnalysis analyze_shape_packing(const ShapePacking<D>& packing, const Scene& scene, const AnalysisOptions& options) {
+  std::vector<std::string> families;
+  for (const ParticleTemplateSpec& t : scene.particle_templates) families.push_back(t.family);
+  return analyze_shape_packing<D>(packing, *scene.container<D>(), requested_templates(scene), families, options);
+}
+
+template PackingAnalysis analyze_shape_packing<2>(const ShapePacking<2>&, const Scene&, const AnalysisOptions&);
+template PackingAnalysis analyze_shape_packing<3>(const ShapePacking<3>&, const Scene&, const AnalysisOptions&);
 template PackingAnalysis analyze_shape_packing<2>(const ShapePacking<2>&, const Container<2>&,
                                                   const std::vector<RequestedTemplate>&, const std::vector<std::string>&,
                                                   const AnalysisOptions&);

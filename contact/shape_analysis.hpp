@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/geometry/container.hpp"
+#include "core/io/scene.hpp"
 #include "core/metrics/packing_analysis.hpp"
 #include "core/metrics/validate.hpp"
 #include "shapes/particle.hpp"
@@ -38,5 +39,9 @@ template <int D>
 PackingAnalysis analyze_shape_packing(const ShapePacking<D>& packing, const Container<D>& container,
                                       const std::vector<RequestedTemplate>& requested,
                                       const std::vector<std::string>& families, const AnalysisOptions& options = {});
+
+/// The same for a packing of the scene's templates, at options.contact_tolerance.
+template <int D>
+PackingAnalysis analyze_shape_packing(const ShapePacking<D>& packing, const Scene& scene, const AnalysisOptions& options);
 
 }  // namespace fp

@@ -137,13 +137,15 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
     timed_step(t, "validate",
           [&] { a.validation = validate_packing(packing, *container, dist_or_null, options.contact_tolerance); });
 
+  // The contacts are found once: the coordination and the network's figures share them.
+  std::vector<PairContact> contacts;
   timed_step(t, "contacts", [&] {
-    a.coordination = contact_stats(packing, container, options.contact_tolerance);
+    contacts = find_pair_contacts(packing, options.contact_tolerance);
+    const std::vector<WallContact> walls = find_wall_contacts(packing, *container, options.contact_tolerance);
+    a.coordination = contact_stats_of(D, packing.size(), contacts, &walls, smallest_radius(packing), options.contact_tolerance);
     a.max_overlap_rel = a.coordination.max_overlap_rel;
   });
-  std::vector<PairContact> contacts;
   timed_step(t, "contact network", [&] {
-    contacts = find_pair_contacts(packing, options.contact_tolerance);
     for (const PairContact& c : contacts) a.max_contact_gap_rel = std::max(a.max_contact_gap_rel, std::abs(c.gap));
     if (a.r_min > 0.0) a.max_contact_gap_rel /= a.r_min;
     a.partial_coordination = partial_coordination(packing.radii, contacts, options.partial_coordination_points);
