@@ -45,6 +45,7 @@ inline std::vector<std::pair<std::string, std::uint64_t>> front_counter_entries(
           {"pairs_considered", c.pairs_considered}, {"pairs_pruned", c.pairs_pruned},
           {"solves", c.solves},                   {"candidates", c.candidates},
           {"rejected_overlap", c.rejected_overlap}, {"rejected_container", c.rejected_container},
+          {"rejected_off_face", c.rejected_off_face},
           {"wall_bodies", c.wall_bodies},         {"radii_drawn", c.radii_drawn},
           {"radii_unplaced", c.radii_unplaced},   {"max_neighbours", c.max_neighbours},
           {"voids_reopened", c.voids_reopened},   {"voids_seeded", c.voids_seeded},

@@ -20,6 +20,7 @@ struct FrontCounters {
   std::uint64_t candidates = 0;           ///< positions returned by the solver
   std::uint64_t rejected_container = 0;   ///< candidates not inside the container
   std::uint64_t rejected_overlap = 0;     ///< candidates overlapping a neighbour
+  std::uint64_t rejected_off_face = 0;    ///< candidates tangent to a wall's plane beyond its face (mesh facet, polygon edge)
   std::uint64_t wall_bodies = 0;          ///< walls offered to the solver as bodies
   std::uint64_t radii_drawn = 0;          ///< radii drawn from the distribution
   std::uint64_t radii_unplaced = 0;       ///< radii drawn but never placed (the pool at the end)

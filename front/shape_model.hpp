@@ -233,6 +233,9 @@ class ShapeModel {
       if (q != last_blocker_ && blocks(q)) { last_blocker_ = q; return true; }
     return false;
   }
+  /// Every position counts as over the face: a shape's contact with a plane can be a whole edge
+  /// or face of it, which one support point does not tell; touches_boundary() decides instead.
+  bool over_face(const Body<D>&, const Draft&, const Vec<D>&) const { return true; }
   bool inside(const Draft&, const Vec<D>& x) {
     trial_.pose.position = x;
     last_protrusion_ = containment_.protrusion(trial_);

@@ -39,6 +39,7 @@ class SphereModel {
 
   SphereModel(const Container<D>& container, const RadiusDistribution& radii, const PackerOptions& options)
       : container_(container), dist_(radii), tol_(options.contact_tolerance),
+        face_slack_(2 * std::sqrt(tol_ * (2 + tol_)) + 1e-12),
         grid_(grid_domain(container, radii.r_max()), radii.r_min(), radii.r_max(), options.grid_cell_factor,
               options.hierarchical_grid_ratio) {}
 
@@ -145,12 +146,29 @@ class SphereModel {
   void begin_placement(int s0, Draft r, std::span<const Body<D>> bodies) {
     session_.begin(Body<D>::sphere(position(s0), radius(s0), s0), r, bodies);
     bodies_ = bodies;
+    // A wall with a face (a mesh facet, a polygon edge) can be touched with s0 only where the
+    // mobile's centre, on the sphere of radius r0 + r around c0 and at height r over the plane,
+    // has its foot over the face: on the circle of centres' feet. Facets a fine mesh offers
+    // around s0 mostly fail this (the circle passes around them), and each would cost a scan of
+    // pairs whose every position over_face() drops.
+    const Vec<D> c0 = position(s0);
+    const double reach = radius(s0) + r, slack = 1e-6 * reach + face_slack_ * r;
+    reachable_.assign(bodies.size(), 1);
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      const Wall<D>* w = bodies[b].wall;
+      if (w == nullptr || w->kind != WallKind::Plane || w->face_edges == 0) continue;
+      const double h = w->normal.dot(c0 - w->point), above = h - r;
+      if (std::abs(above) > reach * (1 + 1e-9)) { reachable_[b] = 0; continue; }
+      const double rho = std::sqrt(std::max((reach - above) * (reach + above), 0.0));
+      reachable_[b] = w->face_reaches(Vec<D>(c0 - h * w->normal), rho, slack);
+    }
   }
   /// Whether body j (3D: the outer loop of the pair scan) can touch the mobile with s0.
-  bool reachable(int) const { return true; }
+  bool reachable(int j) const { return reachable_[j] != 0; }
   /// Whether bodies i and j can both touch one mobile of radius r (two particles farther apart
   /// than r_i + r_j + 2r cannot).
   bool bridgeable(int i, int j, Draft r) const {
+    if (!reachable_[i]) return false;
     const Body<D>& bi = bodies_[i];
     const Body<D>& bj = bodies_[j];
     if (bi.is_wall() || bj.is_wall()) return true;
@@ -177,6 +195,12 @@ class SphereModel {
     for (int q = 0; q < n; ++q)
       if (q != last_blocker_ && blocks(q)) { last_blocker_ = q; return true; }
     return false;
+  }
+  /// Whether the ball (x, r), tangent to body b's plane if b is a wall, touches it over its face:
+  /// its centre's foot within the slack where the distance to the face's edge is still within the
+  /// contact tolerance (r sqrt(2 tol), doubled against rounding).
+  bool over_face(const Body<D>& b, Draft r, const Vec<D>& x) const {
+    return !b.is_wall() || b.wall->over_face(x, face_slack_ * r);
   }
   bool inside(Draft r, const Vec<D>& x) const { return container_.contains_ball(x, r, tol_); }
   /// A mesh facet or polygon edge is offered as its whole plane (line): a position tangent to the
@@ -205,10 +229,12 @@ class SphereModel {
   const Container<D>& container_;
   const RadiusDistribution& dist_;
   double tol_;
+  double face_slack_;  ///< over_face's slack, relative to the radius
   NeighbourGrid<D> grid_;
   Result* res_ = nullptr;
   typename Solver::Session session_;
   std::span<const Body<D>> bodies_;
+  std::vector<char> reachable_;  // per body of the placement: can touch a mobile with s0 (begin_placement)
   std::vector<Vec<D>> nb_c_;  // V's centres and radii, contiguous for the overlap test
   std::vector<double> nb_r_;
   int last_blocker_ = 0;

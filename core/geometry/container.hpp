@@ -34,6 +34,11 @@ class Container {
   /// One-line human description in absolute coordinates, e.g. "box [0,0,0]-[0.9,0.9,0.9]".
   virtual std::string describe() const = 0;
 
+  /// A hint: queries will be about distances up to `reach` (the largest particle). A container
+  /// whose queries are costly (a mesh) builds what makes them cheap at that scale; the answers
+  /// never change. Not to be called while queries run on other threads.
+  virtual void prepare_queries(double /*reach*/) const {}
+
   /// True if the ball (c, r) lies inside, allowing a contact tolerance of rel_tol*r
   /// so that particles tangent to a wall are accepted.
   virtual bool contains_ball(const Vec<D>& c, double r, double rel_tol = 1e-9) const {

@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "core/geometry/mesh_cgal.hpp"
+#include "core/geometry/triangle_closest_point.hpp"
 
 namespace fp::detail {
 namespace {
@@ -40,28 +41,6 @@ double box_distance2(const Vec3& p, const CGAL::Bbox_3& b) {
     d2 += excess * excess;
   }
   return d2;
-}
-
-/// Closest point of triangle abc to p (Ericson, Real-Time Collision Detection, 5.1.5): Voronoi
-/// regions of the vertices, then the edges, else the face. Plain doubles: accurate to rounding.
-Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return a;
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + d1 / (d1 - d3) * ab;
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
-  const double denom = 1.0 / (va + vb + vc);
-  return a + (vb * denom) * ab + (vc * denom) * ac;
 }
 
 /// Squared distance from p to a primitive's (cached) triangle, and the closest point.
@@ -241,6 +220,15 @@ bool TriangleSurfaceIndex::any_facet_closer_than(const Vec3& p, double distance)
   return traits.found();
 }
 
+double TriangleSurfaceIndex::scale() const { return impl_->scale; }
+double TriangleSurfaceIndex::inverse_scale() const { return impl_->inv; }
+
+std::vector<char> TriangleSurfaceIndex::solid_facets() const {
+  std::vector<char> solid(impl_->mesh.number_of_faces(), 0);
+  for (const Mesh::Face_index f : impl_->solid_faces) solid[f.idx()] = 1;
+  return solid;
+}
+
 bool TriangleSurfaceIndex::find_crossing_facets(int& f, int& g) const {
   namespace PMP = CGAL::Polygon_mesh_processing;
   // Zero-area facets are left out: PMP counts each as an intersection with itself, and they
@@ -255,6 +243,10 @@ bool TriangleSurfaceIndex::find_crossing_facets(int& f, int& g) const {
   f = static_cast<int>(pairs.front().first.idx());
   g = static_cast<int>(pairs.front().second.idx());
   return true;
+}
+
+int orientation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return static_cast<int>(CGAL::orientation(to_point(a), to_point(b), to_point(c), to_point(d)));
 }
 
 }  // namespace fp::detail

@@ -20,6 +20,10 @@ struct PolygonSoup {
 /// false and sets `error` to the reason.
 bool read_polygon_soup(const std::string& path, PolygonSoup& soup, std::string& error);
 
+/// The sign of the orientation of d against the plane abc, exact (CGAL's filtered predicate):
+/// +1, 0 (coplanar) or -1.
+int orientation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
 /// Spatial queries on a closed triangle surface: AABB tree + CGAL::Side_of_triangle_mesh,
 /// both built eagerly in the constructor, so that const queries are thread-safe.
 /// Facets with zero area are left out of the tree (they change neither parity nor distances).
@@ -43,6 +47,12 @@ class TriangleSurfaceIndex {
   /// that intersects itself, or two closed parts that overlap. Sets f and g to the first pair
   /// found (CGAL::Polygon_mesh_processing::does_self_intersect's search, kept to name them).
   bool find_crossing_facets(int& f, int& g) const;
+  /// The frame of every query: points are multiplied by inverse_scale() (a power of two, exact)
+  /// before CGAL sees them, and its answers by scale() after.
+  double scale() const;
+  double inverse_scale() const;
+  /// Per facet: whether it has non-zero area (the others are in no query).
+  std::vector<char> solid_facets() const;
 
  private:
   void build(const std::vector<Vec3>& vertices, const std::vector<std::array<int, 3>>& triangles);

@@ -9,6 +9,7 @@
 
 #include "core/geometry/container_checks.hpp"
 #include "core/geometry/deepest_point.hpp"
+#include "core/geometry/mesh_cells.hpp"
 #include "core/geometry/mesh_cgal.hpp"
 #include "core/system/available_memory.hpp"
 
@@ -19,6 +20,13 @@ namespace {
 /// 440-470 B measured as peak RSS over faces for binary STL spheres of 0.6 and 2.6 M faces
 /// (experiments/extremes/RESULTS.md, "Limits"); rounded up.
 constexpr double kBytesPerFacet = 500;
+
+// The cell index (prepare_queries): at most this many cells (10 bytes each) and facet listings
+// (4 bytes each, 8 while built); beyond, the queries stay with the tree.
+constexpr std::size_t kMaxCells = std::size_t(1) << 22;
+constexpr std::size_t kMaxCellEntriesPerFacet = 256;
+constexpr double kCellMarginOverReach = 2.0;
+constexpr double kCellOverReach = 1.5;
 
 std::string base_name(const std::string& path) {
   const std::size_t slash = path.find_last_of("/\\");
@@ -304,12 +312,20 @@ MeshContainer::MeshContainer(std::vector<Vec3> vertices, std::vector<std::array<
   const Vec3 o = box_.center();  // about the centre: less cancellation far from the origin
   double six_volume = 0.0;
   inward_.resize(nf);
+  sides_.resize(nf);
   for (int f = 0; f < nf; ++f) {
     const auto& t = triangles_[f];
     six_volume += (vertices_[t[0]] - o).dot((vertices_[t[1]] - o).cross(vertices_[t[2]] - o));
     const Vec3 av = area_vector(vertices_, t);
     const double area = av.norm();
     inward_[f] = area > 0.0 ? Vec3(-av / area) : Vec3::Zero();
+    if (!(area > 0.0)) continue;  // never offered as a wall
+    for (int k = 0; k < 3; ++k) {  // out of the facet, in its plane
+      const Vec3 &a = vertices_[t[k]], &b = vertices_[t[(k + 1) % 3]], &c = vertices_[t[(k + 2) % 3]];
+      Vec3 m = (b - a).cross(inward_[f]).normalized();
+      if (m.dot(c - a) > 0.0) m = -m;
+      sides_[f][k] = {m, m.dot(a), a};
+    }
   }
   volume_ = six_volume / 6.0;
   if (!(volume_ > 1e-12 * diag * diag * diag)) refuse(name_, "encloses no volume");
@@ -326,11 +342,44 @@ MeshContainer::MeshContainer(std::vector<Vec3> vertices, std::vector<std::array<
 
 MeshContainer::~MeshContainer() = default;
 
+void MeshContainer::prepare_queries(double reach) const {
+  const double inv = index_->inverse_scale();
+  // Lists to twice the reach (the analysis's core region is the container shrunk by 2 r_max);
+  // cells of 1.5 times it: femur, U[0.005, 0.01], the fastest whole run of cells 1, 1.5 and 2
+  // (experiments/mesh-speed/RESULTS.md).
+  const double cell = kCellOverReach * reach * inv, margin = kCellMarginOverReach * reach * inv;
+  if (!(margin > 0.0) || !std::isfinite(margin) || (cells_ && cells_->margin() == margin)) return;
+  std::vector<Vec3> scaled(vertices_.size());
+  for (std::size_t v = 0; v < vertices_.size(); ++v) scaled[v] = vertices_[v] * inv;  // CGAL's frame, exactly
+  const detail::TriangleSurfaceIndex& index = *index_;
+  const double scale = index_->scale();
+  auto built = std::make_unique<const detail::MeshCells>(scaled, triangles_, index_->solid_facets(), cell, margin, kMaxCells,
+                                                         kMaxCellEntriesPerFacet * triangles_.size() + kMaxCells,
+                                                         [&](const Vec3& q) { return index.side(q * scale); });
+  cells_ = built->built() ? std::move(built) : nullptr;
+}
+
+std::array<std::size_t, 2> MeshContainer::cell_index_size() const {
+  return cells_ ? std::array<std::size_t, 2>{cells_->cells(), cells_->entries()} : std::array<std::size_t, 2>{0, 0};
+}
+
 bool MeshContainer::inside(const Vec3& p) const {
+  if (cells_)
+    if (const int side = cells_->side(p * index_->inverse_scale()); side != 0) return side > 0;
   return index_->side(p) >= 0;
 }
 
 double MeshContainer::signed_distance(const Vec3& p) const {
+  if (cells_) {
+    Vec3 q;
+    int side = 0;
+    if (cells_->nearest(p * index_->inverse_scale(), q, side)) {
+      if (side == 0) side = index_->side(p);
+      if (side == 0) return 0.0;
+      const double d = (p - q * index_->scale()).norm();
+      return side > 0 ? -d : d;
+    }
+  }
   const int side = index_->side(p);
   if (side == 0) return 0.0;
   const double d = (p - index_->closest_point(p, nullptr)).norm();
@@ -338,15 +387,21 @@ double MeshContainer::signed_distance(const Vec3& p) const {
 }
 
 void MeshContainer::walls_near(const Vec3& p, double reach, std::vector<Wall<3>>& out) const {
+  if (cells_ && cells_->distance_lower_bound(p * index_->inverse_scale()) > reach * index_->inverse_scale()) return;
   thread_local std::vector<int> facets;  // scratch, reused across calls
   facets.clear();
   index_->facets_within(p, reach, facets);
-  for (int f : facets) out.push_back(Wall<3>::plane(vertices_[triangles_[f][0]], inward_[f], f));
+  for (int f : facets) out.push_back(Wall<3>::plane(vertices_[triangles_[f][0]], inward_[f], f).over(sides_[f]));
 }
 
 bool MeshContainer::contains_ball(const Vec3& c, double r, double rel_tol) const {
   const double clearance = r - rel_tol * r;
   if (!(clearance > 0.0)) return signed_distance(c) <= -clearance;
+  if (cells_) {
+    const double inv = index_->inverse_scale();
+    const auto answer = cells_->ball_inside(c * inv, clearance * inv);
+    if (answer != detail::MeshCells::Answer::Unknown) return answer == detail::MeshCells::Answer::Yes;
+  }
   return index_->side(c) > 0 && !index_->any_facet_closer_than(c, clearance);
 }
 

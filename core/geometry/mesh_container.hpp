@@ -15,6 +15,7 @@ namespace fp {
 
 namespace detail {
 class TriangleSurfaceIndex;
+class MeshCells;
 }
 
 class MeshContainer final : public Container<3> {
@@ -55,6 +56,14 @@ class MeshContainer final : public Container<3> {
   /// than the radius instead of finding the nearest one.
   bool contains_ball(const Vec3& c, double r, double rel_tol = 1e-9) const override;
 
+  /// Builds the cell index for queries up to `reach` (the largest particle): points deep inside
+  /// or outside are then answered by their cell, those near the surface from a short list of
+  /// facets, exactly as the tree answers them (mesh_cells.hpp); the rest by the tree. Call it
+  /// before queries run concurrently.
+  void prepare_queries(double reach) const override;
+  /// The cell index's size (0 without one): cells and facet listings.
+  std::array<std::size_t, 2> cell_index_size() const;
+
   std::size_t num_facets() const { return triangles_.size(); }
   /// Vertices (duplicates merged, scaled, in the local frame) and facets oriented with outward normals.
   const std::vector<Vec3>& vertices() const { return vertices_; }
@@ -70,7 +79,9 @@ class MeshContainer final : public Container<3> {
   std::vector<Vec3> vertices_;
   std::vector<std::array<int, 3>> triangles_;
   std::vector<Vec3> inward_;  ///< unit inward normal per facet (zero for zero-area facets)
+  std::vector<std::array<FaceEdge<3>, 3>> sides_;  ///< per facet: its three edges, as a bounded wall
   std::unique_ptr<detail::TriangleSurfaceIndex> index_;
+  mutable std::unique_ptr<const detail::MeshCells> cells_;  ///< prepare_queries(): a cache, not state
   Aabb<3> box_;
   double volume_ = 0.0;
   Vec3 interior_ = Vec3::Zero();

@@ -117,10 +117,12 @@ PolygonContainer::PolygonContainer(std::vector<Vec2> vertices, const Vec2& origi
 
   const std::vector<Vec2>& w = tree_.vertices();
   inward_.resize(n);
+  ends_.resize(n);
   reflex_.resize(n);
   for (int i = 0; i < n; ++i) {
     const Vec2 e = (w[(i + 1) % n] - w[i]).normalized();
     inward_[i] = Vec2(-e.y(), e.x());  // left of a counter-clockwise edge
+    ends_[i] = {FaceEdge<2>{e, e.dot(w[(i + 1) % n]), w[i]}, FaceEdge<2>{-e, -e.dot(w[i]), w[(i + 1) % n]}};
     reflex_[i] = orient(w[(i + n - 1) % n], w[i], w[(i + 1) % n]) < 0.0;
   }
 
@@ -190,7 +192,7 @@ void PolygonContainer::walls_near(const Vec2& p, double reach, std::vector<Wall<
   int found = 0;
   tree_.for_each_edge_near(p, std::sqrt(reach2), [&](int i) {
     const Vec2& a = tree_.a(i);
-    if (segment_distance2(p, a, tree_.b(i)) <= reach2) out.push_back(Wall<2>::plane(a, inward_[i], i));
+    if (segment_distance2(p, a, tree_.b(i)) <= reach2) out.push_back(Wall<2>::plane(a, inward_[i], i).over(ends_[i]));
     if (reflex_[i] && (p - a).squaredNorm() <= reach2) {
       if (found < static_cast<int>(corners.size())) corners[found] = i;
       ++found;

@@ -3,6 +3,7 @@
 // (as Vertex walls), since a disk can touch a corner that points into the container.
 // Queries go through a tree over the edges (edge_chain_tree.hpp): about log n per query on a
 // reasonable polygon, with the same doubles as the loops over every edge.
+#include <array>
 #include <vector>
 
 #include "core/geometry/container.hpp"
@@ -46,6 +47,7 @@ class PolygonContainer final : public Container<2> {
 
   EdgeChainTree tree_;
   std::vector<Vec2> inward_;  ///< unit inward normal of edge i
+  std::vector<std::array<FaceEdge<2>, 2>> ends_;  ///< edge i as a bounded wall: its two end points
   std::vector<char> reflex_;
   double area_ = 0.0;
   Vec2 interior_ = Vec2::Zero();

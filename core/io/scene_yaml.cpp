@@ -893,6 +893,9 @@ void parse_body(const Map& root, Scene& scene, const Context& ctx) {
       for (int a = 0; a < D; ++a) seed[a] = (*scene.packer.seed_point)[a];
     container = parse_container<D>(container_value, ctx, seed_frame_origin<D>(seed, r_max));
   }
+  // Every query of the packing, its check and its analysis is about distances up to about the
+  // largest particle: a mesh indexes its cells for that scale.
+  container->prepare_queries(r_max);
   if constexpr (D == 3) scene.container3 = std::move(container);
   else scene.container2 = std::move(container);
 }

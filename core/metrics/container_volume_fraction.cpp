@@ -112,14 +112,20 @@ class GenericRegion final : public Region<D> {
  public:
   GenericRegion(const Container<D>& container, double s, std::optional<double> measure)
       : Region<D>(measure), container_(container), shrink_(s) {}
+  // As tests of a ball's clearance where they can be (contains_ball): a mesh answers those from
+  // its cells, without the nearest facet of a point deep inside. A tie goes to Sample, which is
+  // always right.
   Cut cut(const Vec<D>& c, double r) const override {
-    const double sd = container_.signed_distance(c);
-    if (sd >= r - shrink_) return {CutKind::Outside};
-    if (sd <= -shrink_ - r + kTouching * r) return {CutKind::Inside, ball_measure<D>(r)};
+    const double inner = shrink_ + r - kTouching * r;  // inside iff the signed distance <= -inner
+    if (inner > 0.0 ? container_.contains_ball(c, inner, 0.0) : container_.signed_distance(c) <= -inner)
+      return {CutKind::Inside, ball_measure<D>(r)};
+    // Outside iff the signed distance >= r - shrink.
+    if (shrink_ > r ? !container_.contains_ball(c, shrink_ - r, 0.0) : container_.signed_distance(c) >= r - shrink_)
+      return {CutKind::Outside};
     return {CutKind::Sample};
   }
   bool contains(const Vec<D>& x) const override {
-    return shrink_ == 0.0 ? container_.inside(x) : container_.signed_distance(x) <= -shrink_;
+    return shrink_ == 0.0 ? container_.inside(x) : container_.contains_ball(x, shrink_, 0.0);
   }
   Aabb<D> bounds() const override {
     const Aabb<D> b = container_.bounds();

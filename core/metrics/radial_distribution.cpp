@@ -143,7 +143,7 @@ RadialDistribution radial_distribution(const Packing<D>& packing, const Containe
 
   std::vector<std::uint32_t> eligible;
   for (std::size_t i = 0; i < n; ++i)
-    if (usable[i] && container.signed_distance(packing.centers[i]) <= -out.reference_margin)
+    if (usable[i] && container.contains_ball(packing.centers[i], out.reference_margin, 0.0))  // signed distance <= -margin
       eligible.push_back(static_cast<std::uint32_t>(i));
   out.eligible_particles = eligible.size();
   out.reference_measure = region_measure(container, out.reference_margin, options.qmc);
