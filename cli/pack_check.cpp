@@ -6,6 +6,14 @@
 
 namespace fp {
 
+PackCheck pack_check_of(const ValidationReport& validation, double volume_fraction) {
+  PackCheck c;
+  c.validation = validation;
+  c.volume_fraction = volume_fraction;
+  c.timing_name = "validation";
+  return c;
+}
+
 PackCheck pack_check_of(const PackingAnalysis& a) {
   PackCheck c;
   c.validation = *a.validation;

@@ -13,6 +13,11 @@
 
 namespace fp {
 
+/// How much of the analysis a run needs: all of it when it is shown (the summary) or stored (the
+/// record, a JSON output); else the validation alone, which every packing gets (a user who asked
+/// for neither does not wait for g(r) or the quasi-Monte Carlo volume fractions).
+enum class CheckDepth { Validation, Analysis };
+
 struct PackCheck {
   ValidationReport validation;
   double volume_fraction = 0.0;   ///< of the container (2D: area fraction)
@@ -26,5 +31,7 @@ struct PackCheck {
 
 /// The record's figures of an analysis (its validation included) and its table as summary lines.
 PackCheck pack_check_of(const PackingAnalysis& analysis);
+/// The validation alone (CheckDepth::Validation); `volume_fraction`: the packer's own figure.
+PackCheck pack_check_of(const ValidationReport& validation, double volume_fraction);
 
 }  // namespace fp

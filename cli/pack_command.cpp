@@ -76,10 +76,14 @@ int run(const Scene& scene, const PackCommandOptions& o) {
   const double n = static_cast<double>(P.size());
   const double rate = res.seconds > 0 ? n / res.seconds : 0.0;
 
+  // The full analysis where it is shown or stored; the validation always.
+  bool stored = !o.record_path.empty();
+  for (const OutputSpec& out : scene.outputs) stored |= parse_output_format(out.format) == OutputFormat::Json;
+  const CheckDepth depth = !o.quiet || stored ? CheckDepth::Analysis : CheckDepth::Validation;
   const auto t_check = Clock::now();
   const PackCheck check = [&] {
     const Activity checking("checking the packing of '" + scene.source_path + "'");
-    return Kind::check(scene, res);
+    return Kind::check(scene, res, depth);
   }();
   const double check_seconds = since(t_check);
   const ValidationReport& v = check.validation;

@@ -36,11 +36,14 @@ typename ShapePack<D>::Result ShapePack<D>::pack(const Scene& scene, const Progr
 }
 
 template <int D>
-PackCheck ShapePack<D>::check(const Scene& scene, const Result& res) {
+PackCheck ShapePack<D>::check(const Scene& scene, const Result& res, CheckDepth depth) {
   const Container<D>& container = *scene.container<D>();
   AnalysisOptions options;
   options.contact_tolerance = res.contact_tolerance;
-  PackCheck c = pack_check_of(analyze_shape_packing<D>(res.packing, scene, options));
+  PackCheck c = depth == CheckDepth::Analysis
+                    ? pack_check_of(analyze_shape_packing<D>(res.packing, scene, options))
+                    : pack_check_of(validate_shapes<D>(res.packing, container, res.contact_tolerance, requested_templates(scene)),
+                                    res.solid_measure / container.measure());
   const SolverCounters& s = res.solver;
   const std::vector<std::pair<std::string, std::uint64_t>> solver = {
       {"analytic_solves", s.analytic_solves}, {"minimisations", s.minimisations}, {"gap_evaluations", s.gap_evaluations},

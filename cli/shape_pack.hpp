@@ -16,7 +16,7 @@ template <int D>
 struct ShapePack {
   using Result = ShapePackResult<D>;
   static Result pack(const Scene& scene, const ProgressFn& progress);
-  static PackCheck check(const Scene& scene, const Result& result);
+  static PackCheck check(const Scene& scene, const Result& result, CheckDepth depth);
 };
 
 }  // namespace fp

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/metrics/packing_analysis.hpp"
+#include "core/metrics/validate.hpp"
 #include "front/pack.hpp"
 
 namespace fp {
@@ -13,11 +14,16 @@ typename SpherePack<D>::Result SpherePack<D>::pack(const Scene& scene, const Pro
 }
 
 template <int D>
-PackCheck SpherePack<D>::check(const Scene& scene, const Result& res) {
-  // Every figure of `frontpack analyze`, from the same code, the validation included.
+PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth depth) {
+  // Every figure of `frontpack analyze`, from the same code, the validation included; or the
+  // validation alone.
+  const Container<D>& container = *scene.container<D>();
   AnalysisOptions options;
   options.contact_tolerance = res.contact_tolerance;
-  PackCheck c = pack_check_of(analyze_packing<D>(res.packing, scene.container<D>(), scene.radii.get(), options));
+  PackCheck c = depth == CheckDepth::Analysis
+                    ? pack_check_of(analyze_packing<D>(res.packing, &container, scene.radii.get(), options))
+                    : pack_check_of(validate_packing<D>(res.packing, container, scene.radii.get(), res.contact_tolerance),
+                                    res.solid_measure / container.measure());
   c.counters.emplace_back("grid_bytes", res.grid_bytes);
   return c;
 }

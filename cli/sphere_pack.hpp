@@ -11,7 +11,7 @@ template <int D>
 struct SpherePack {
   using Result = PackResult<D>;
   static Result pack(const Scene& scene, const ProgressFn& progress);
-  static PackCheck check(const Scene& scene, const Result& result);
+  static PackCheck check(const Scene& scene, const Result& result, CheckDepth depth);
 };
 
 }  // namespace fp
