@@ -30,7 +30,7 @@ class ContainmentCheck {
   /// (signed_distance(c) + r) / r for r > 0: the ball (c, r) is inside with tolerance tol when
   /// this is <= tol (centre inside and distance to the boundary >= r - tol r). Values below 0
   /// are exact down to -1 (the mesh search reaches r).
-  double protrusion(const Vec<D>& c, double r) const { return (signed_distance(c, r) + r) / r; }
+  double protrusion(const Vec<D>& c, double r) const { return (signed_distance(c, 2 * r) + r) / r; }
 
   struct Kind;  // one per container kind (containment_check.cpp)
 

@@ -112,7 +112,11 @@ class SphereParticles {
     if (normal) *normal = len > 0.0 ? Vec<D>(d / len) : Vec<D>::Zero();
     return p_.radii[i] + p_.radii[j] - len;
   }
-  double protrusion(std::size_t i, double unit) const { return containment_.signed_distance(p_.centers[i], unit) + p_.radii[i]; }
+  // The search reaches 2 units: a ball deeper than its radius must read as inside (< 0), not as
+  // touching (a mesh's search returns -reach beyond its reach).
+  double protrusion(std::size_t i, double unit) const {
+    return containment_.signed_distance(p_.centers[i], 2 * unit) + p_.radii[i];
+  }
   int template_of(std::size_t) const { return 0; }
   double size_of(std::size_t i) const { return p_.radii[i]; }
 

@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/geometry/mesh_container.hpp"
+#include "core/geometry/triangle_closest_point.hpp"
 #include "core/metrics/validate.hpp"
 #include "tests/metrics/analysis_test_util.hpp"
 
@@ -54,6 +56,36 @@ TEST_F(ValidateInFemur, CleanPackingPasses) {
   const ValidationReport rep = validate_packing<3>(clean_, *femur_, nullptr);
   EXPECT_TRUE(rep.ok) << rep.summary();
   EXPECT_LE(rep.max_outside_rel, 0.0);
+}
+
+TEST_F(ValidateInFemur, CountsAsWallContactsExactlyTheBallsTouchingTheSurface) {
+  // Brute force: the distance to every facet. The lattice's balls are mostly deep inside; a few
+  // are moved to touch the surface (along the direction to their nearest surface point).
+  Packing<3> p = clean_;
+  std::size_t touching = 0;
+  for (std::size_t i = 0; i < p.size(); i += 7) {
+    const Vec3 c = p.centers[i];
+    double best = std::numeric_limits<double>::infinity();
+    Vec3 nearest = c;
+    for (const auto& t : femur_->triangles()) {
+      const Vec3 q = detail::closest_on_triangle(c, femur_->vertices()[t[0]], femur_->vertices()[t[1]], femur_->vertices()[t[2]]);
+      if ((q - c).norm() < best) best = (q - c).norm(), nearest = q;
+    }
+    // Keep it inside: move it so that its distance to that point is r (it may now overlap a
+    // neighbour or come nearer another facet: only the wall count is checked here).
+    p.centers[i] = nearest + (c - nearest) * (r_ / best);
+  }
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& t : femur_->triangles())
+      best = std::min(best, (detail::closest_on_triangle(p.centers[i], femur_->vertices()[t[0]], femur_->vertices()[t[1]],
+                                                       femur_->vertices()[t[2]]) - p.centers[i]).norm());
+    touching += femur_->inside(p.centers[i]) && best <= r_ * (1 + 1e-9);
+  }
+  ASSERT_GT(touching, 50u);
+  ASSERT_LT(touching, p.size() / 2);
+  const ValidationReport rep = validate_packing<3>(p, *femur_, nullptr);
+  EXPECT_EQ(rep.wall_contacts, touching);
 }
 
 TEST_F(ValidateInFemur, FindsAPlantedOverlapOf1e8RMin) {
