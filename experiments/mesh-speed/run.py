@@ -64,7 +64,7 @@ def recorded(binary, scene_path, out):
     subprocess.run([binary, "pack", str(scene_path), "-q", "-o", str(out / "y.csv"), "--record", str(rec)], check=True)
     d = json.loads(rec.read_text())
     return {"n": d["n"], "vf": d["metrics"]["volume_fraction_container"], "pack": d["timings"]["pack"],
-            "solves": d["counters"]["solves"], "wall_contacts": d["counters"]["wall_contacts"]}
+            "solves": d["counters"]["solves"]}
 
 
 def main():
@@ -72,8 +72,8 @@ def main():
     repeats = int(sys.argv[4]) if len(sys.argv) > 4 else 5
     out.mkdir(parents=True, exist_ok=True)
     rows = []
-    print("| scene | build | particles | VF container | solves / particle | wall contacts | pack s (recorded run) | whole process, CPU s (median of %d) | spheres per CPU-second |" % repeats)
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("| scene | build | particles | VF container | solves / particle | pack s (recorded run) | whole process, CPU s (median of %d) | spheres per CPU-second |" % repeats)
+    print("|---|---|---|---|---|---|---|---|")
     for name, path in scenes(out):
         times = {old: [], new: []}
         for _ in range(repeats):
@@ -84,8 +84,8 @@ def main():
             cpu = statistics.median(t[0] for t in times[b])
             rows.append({"scene": name, "build": label, **info, "cpu_median": cpu, "cpu_all": " ".join("%.3f" % t[0] for t in times[b]),
                          "wall_median": statistics.median(t[1] for t in times[b]), "peak_kb": max(t[2] for t in times[b])})
-            print("| %s | %s | %d | %.4f | %.0f | %d | %.3f | %.3f | %.0f |" % (
-                name, label, info["n"], info["vf"], info["solves"] / max(info["n"], 1), info["wall_contacts"], info["pack"], cpu,
+            print("| %s | %s | %d | %.4f | %.0f | %.3f | %.3f | %.0f |" % (
+                name, label, info["n"], info["vf"], info["solves"] / max(info["n"], 1), info["pack"], cpu,
                 info["n"] / cpu))
             sys.stdout.flush()
     with open(out / "runs.csv", "w", newline="") as f:
