@@ -22,9 +22,11 @@ namespace {
 constexpr double kBytesPerFacet = 500;
 
 // The cell index (prepare_queries): at most this many cells (10 bytes each) and facet listings
-// (4 bytes each, 8 while built); beyond, the queries stay with the tree.
+// (8 bytes each, 20 while built: at most ~330 MB for the largest); beyond, the queries stay with
+// the tree (a mesh of millions of facets far smaller than the particles).
 constexpr std::size_t kMaxCells = std::size_t(1) << 22;
 constexpr std::size_t kMaxCellEntriesPerFacet = 256;
+constexpr std::size_t kMaxCellEntries = std::size_t(1) << 24;
 constexpr double kCellMarginOverReach = 2.0;
 constexpr double kCellOverReach = 1.5;
 
@@ -354,7 +356,7 @@ void MeshContainer::prepare_queries(double reach) const {
   const detail::TriangleSurfaceIndex& index = *index_;
   const double scale = index_->scale();
   auto built = std::make_unique<const detail::MeshCells>(scaled, triangles_, index_->solid_facets(), cell, margin, kMaxCells,
-                                                         kMaxCellEntriesPerFacet * triangles_.size() + kMaxCells,
+                                                         std::min(kMaxCellEntriesPerFacet * triangles_.size() + kMaxCells, kMaxCellEntries),
                                                          [&](const Vec3& q) { return index.side(q * scale); });
   cells_ = built->built() ? std::move(built) : nullptr;
 }
