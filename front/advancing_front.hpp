@@ -451,8 +451,7 @@ class AdvancingFront {
       for (int q = 0; q < m; ++q) {
         // A mesh facet or polygon edge is solved as its whole plane (line): a position tangent to
         // it beyond the face touches no wall there, and is dropped before any costlier test.
-        if (rank == 0 && !(model_.over_face(bodies_[i], d, out[q].position) &&
-                           model_.over_face(bodies_[j], d, out[q].position))) {
+        if (rank == 0 && !(model_.over_face(i, d, out[q].position) && model_.over_face(j, d, out[q].position))) {
           ++res.counters.rejected_off_face;
           continue;
         }

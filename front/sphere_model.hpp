@@ -199,8 +199,8 @@ class SphereModel {
   /// Whether the ball (x, r), tangent to body b's plane if b is a wall, touches it over its face:
   /// its centre's foot within the slack where the distance to the face's edge is still within the
   /// contact tolerance (r sqrt(2 tol), doubled against rounding).
-  bool over_face(const Body<D>& b, Draft r, const Vec<D>& x) const {
-    return !b.is_wall() || b.wall->over_face(x, face_slack_ * r);
+  bool over_face(int b, Draft r, const Vec<D>& x) const {
+    return !bodies_[b].is_wall() || bodies_[b].wall->over_face(x, face_slack_ * r);
   }
   bool inside(Draft r, const Vec<D>& x) const { return container_.contains_ball(x, r, tol_); }
   /// A mesh facet or polygon edge is offered as its whole plane (line): a position tangent to the

@@ -71,17 +71,24 @@ struct Wall {
   /// `slack`. The face is connected: it does iff its nearest point is within rho and its farthest
   /// corner beyond. A mobile ball touching a sphere and the plane has its foot on such a circle.
   bool face_reaches(const Vec<D>& q, double rho, double slack) const {
-    double nearest2 = over_face(q, 0.0) ? 0.0 : std::numeric_limits<double>::infinity(), farthest2 = 0.0;
+    double farthest2 = 0.0;
+    for (int k = 0; k < face_edges; ++k) farthest2 = std::max(farthest2, (face[k].start - q).squaredNorm());
+    const double lo = rho + slack, hi = std::max(rho - slack, 0.0);
+    return farthest2 >= hi * hi && face_distance2(q) <= lo * lo;
+  }
+
+  /// Plane with a face: the squared distance from q (on the plane) to the face.
+  double face_distance2(const Vec<D>& q) const {
+    if (over_face(q, 0.0)) return 0.0;
+    double nearest2 = std::numeric_limits<double>::infinity();
     for (int k = 0; k < face_edges; ++k) {
       const Vec<D>& a = face[k].start;
       const Vec<D> ab = face[(k + 1) % face_edges].start - a;
       const double len2 = ab.squaredNorm();
       const double t = len2 > 0.0 ? std::clamp((q - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
       nearest2 = std::min(nearest2, (a + t * ab - q).squaredNorm());
-      farthest2 = std::max(farthest2, (a - q).squaredNorm());
     }
-    const double lo = rho + slack, hi = std::max(rho - slack, 0.0);
-    return nearest2 <= lo * lo && farthest2 >= hi * hi;
+    return nearest2;
   }
 
   /// Signed gap between this wall and a ball (c, r) on the container side: 0 = tangent, < 0 = overlap.
