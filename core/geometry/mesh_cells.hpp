@@ -54,7 +54,16 @@ class MeshCells {
     int parity = 0;
     bool degenerate = false;
   };
+  // The build, in order (the constructor): the grid, the facet lists, the distance bounds, the
+  // samples' sides. list_facets and find_sides return false where the index gives up.
+  void size_grid(const std::vector<Vec3>& vertices, double cell, std::size_t max_cells);
+  bool list_facets(const std::vector<char>& solid, std::size_t max_entries, std::vector<double>& nearest2);
+  void bound_distances(const std::vector<double>& nearest2);
+  bool find_sides(const std::function<int(const Vec3&)>& side_of);
+
   long cell_of(const Vec3& p) const;  ///< -1 outside the grid
+  bool listed(long cell) const;       ///< some facet comes within the margin of the cell
+  std::array<long, 3> coords(long cell) const;
   Vec3 sample(long cell) const;
   /// Crossings of segment pq with the listed facets of `cell` (and of `other`'s list, without
   /// repeating those in both, when other >= 0).
@@ -64,13 +73,14 @@ class MeshCells {
 
   bool built_ = false;
   double margin_ = 0.0, h_ = 1.0;
-  double half_diagonal_ = 0.0;  ///< of a cell, widened a little (pruning bounds)
-  double box_reach_ = 0.0;      ///< listed within this of the centre: may meet the cell's box
+  /// Of a cell, widened a little: the pruning bound, and the reach from its centre of the facets
+  /// that may meet its box (the head of its list).
+  double half_diagonal_ = 0.0;
   Vec3 lo_ = Vec3::Zero();
   std::array<long, 3> n_{0, 0, 0};
   std::vector<std::array<Vec3, 3>> tri_;  ///< corners of each facet, in the query frame
-  std::vector<std::uint32_t> start_;      ///< facets of cell c: items_[start_[c] .. start_[c + 1]), by id
-  std::vector<std::int32_t> items_;       ///< nearest to the cell's centre first
+  std::vector<std::uint32_t> start_;      ///< facets of cell c: items_[start_[c] .. start_[c + 1])
+  std::vector<std::int32_t> items_;       ///< nearest to the cell's centre first (then by id)
   std::vector<float> item_distance_;      ///< per listing: the facet's distance from the centre, rounded down
   std::vector<float> lower_bound_;        ///< per cell, rounded down
   std::vector<std::int8_t> side_;         ///< per cell: side of its sample (+1 / -1)
