@@ -281,17 +281,14 @@ class ShapeModel {
         for (const Vec<D>& v : core.points) {
           const Vec<D> o = d.rotation * v;
           if (w->normal.dot(o) - core.radius > low + tie) continue;
-          if (count++ == 0) f.lowest = o - w->normal.dot(o) * w->normal;
-          else spread = std::max(spread, (o - w->normal.dot(o) * w->normal - f.lowest).norm());
+          const Vec<D> along = o - w->normal.dot(o) * w->normal;  // its offset along the plane
+          if (count++ == 0) f.lowest = along;
+          else spread = std::max(spread, (along - f.lowest).norm());
         }
       f.single = count == 1;
-      const double h0 = w->normal.dot(c0_ - w->point), above = h0 + low;  // the reference point's height is -low
-      if (std::abs(above) > reach * (1 + 1e-9)) {
-        f.reachable = false;
-        continue;
-      }
-      const double rho = std::sqrt(std::max((reach - above) * (reach + above), 0.0)) + spread + 1e-6 * reach;
-      f.reachable = w->face_distance2(Vec<D>(c0_ - h0 * w->normal + f.lowest)) <= rho * rho;
+      const double feet = w->feet_radius(c0_, -low, reach);  // the reference point's height is -low
+      const double rho = feet + spread + 1e-6 * reach;
+      f.reachable = feet >= 0.0 && w->face_distance2(Vec<D>(w->foot(c0_) + f.lowest)) <= rho * rho;
     }
   }
 

@@ -157,10 +157,8 @@ class SphereModel {
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       const Wall<D>* w = bodies[b].wall;
       if (w == nullptr || w->kind != WallKind::Plane || w->face_edges == 0) continue;
-      const double h = w->normal.dot(c0 - w->point), above = h - r;
-      if (std::abs(above) > reach * (1 + 1e-9)) { reachable_[b] = 0; continue; }
-      const double rho = std::sqrt(std::max((reach - above) * (reach + above), 0.0));
-      reachable_[b] = w->face_reaches(Vec<D>(c0 - h * w->normal), rho, slack);
+      const double rho = w->feet_radius(c0, r, reach);
+      reachable_[b] = rho >= 0.0 && w->face_reaches(w->foot(c0), rho, slack);
     }
   }
   /// Whether body j (3D: the outer loop of the pair scan) can touch the mobile with s0.

@@ -3,6 +3,7 @@
 // container itself, only the few walls near the front particle, as loci of centres.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 
@@ -56,6 +57,19 @@ struct Wall {
   }
   static Wall vertex(const Vec<D>& p, int id = -1) {
     Wall w; w.kind = WallKind::Vertex; w.point = p; w.id = id; return w;
+  }
+
+  /// Plane: p's foot on it.
+  Vec<D> foot(const Vec<D>& p) const { return p - normal.dot(p - point) * normal; }
+
+  /// Plane: the points at `height` over it and at distance `reach` from c have their feet on a
+  /// circle around c's foot (two points in 2D): its radius, or -1 if there are none. A mobile
+  /// touching a ball around c (reach: the two radii) and this plane (height: the mobile's
+  /// support towards it) has its reference point there.
+  double feet_radius(const Vec<D>& c, double height, double reach) const {
+    const double above = normal.dot(c - point) - height;
+    if (std::abs(above) > reach * (1 + 1e-9)) return -1.0;
+    return std::sqrt(std::max((reach - above) * (reach + above), 0.0));
   }
 
   /// Plane: whether p's foot on the plane lies over the face, within `slack` of its edges. A

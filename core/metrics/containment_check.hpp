@@ -29,7 +29,7 @@ class ContainmentCheck {
   double signed_distance(const Vec<D>& p, double reach = std::numeric_limits<double>::infinity()) const;
   /// (signed_distance(c) + r) / r for r > 0: the ball (c, r) is inside with tolerance tol when
   /// this is <= tol (centre inside and distance to the boundary >= r - tol r). Values below 0
-  /// are exact down to -1 (the mesh search reaches r).
+  /// are exact down to -1 (the mesh search reaches 2 r).
   double protrusion(const Vec<D>& c, double r) const { return (signed_distance(c, 2 * r) + r) / r; }
 
   struct Kind;  // one per container kind (containment_check.cpp)
