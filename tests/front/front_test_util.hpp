@@ -16,6 +16,7 @@
 #include <Eigen/Geometry>  // cross()
 
 #include "core/geometry/packing.hpp"
+#include "core/geometry/triangle_closest_point.hpp"
 #include "core/geometry/vec.hpp"
 #include "core/io/scene_yaml.hpp"
 
@@ -158,27 +159,6 @@ inline SignedDistance<2> polygon_distance(std::vector<Vec2> v_abs) {
   };
 }
 
-/// Closest point of triangle abc to p (Ericson, Real-Time Collision Detection, 5.1.5).
-inline Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return a;
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + d1 / (d1 - d3) * ab;
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
-  const double denom = 1.0 / (va + vb + vc);
-  return a + ab * (vb * denom) + ac * (vc * denom);
-}
-
 /// Closed triangle mesh: brute-force distance to every facet, sign by the winding number
 /// (sum of the facets' solid angles, Van Oosterom & Strackee): ~±1 inside, ~0 outside, so it
 /// does not depend on the facets' orientation being outward, only consistent.
@@ -188,7 +168,7 @@ inline SignedDistance<3> mesh_distance(std::vector<Vec3> v, std::vector<std::arr
     double omega = 0;
     for (const auto& f : t) {
       const Vec3 a = v[f[0]] - origin, b = v[f[1]] - origin, c = v[f[2]] - origin;
-      dist2 = std::min(dist2, (closest_on_triangle(p, a, b, c) - p).squaredNorm());
+      dist2 = std::min(dist2, (fp::detail::closest_on_triangle(p, a, b, c) - p).squaredNorm());
       const Vec3 x = a - p, y = b - p, z = c - p;
       const double lx = x.norm(), ly = y.norm(), lz = z.norm();
       const double num = x.dot(y.cross(z));
