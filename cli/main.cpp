@@ -46,6 +46,10 @@ int run(int argc, char** argv) {
       "UINT64");
   pack_cmd->add_option("--seed", seed_text, "override the scene's 64-bit seed (decimal)")->check(decimal_seed);
   pack_cmd->add_option("--format", pack.format, "format of -o: vtu | yade | lammps | csv | json");
+  pack_cmd->add_option("-j,--threads", pack.threads,
+                       "threads (0: every hardware thread; replaces the scene's packer.threads). Above 1 the "
+                       "container grows in blocks, with the same output for every thread count")
+      ->check(CLI::Range(0, 4096));
   pack_cmd->add_option("--record", pack.record_path, "also write the JSON run record (without particles) to PATH");
   pack_cmd->add_flag("-q,--quiet", pack.quiet, "no summary on stdout");
   pack_cmd->add_flag("--progress", pack.force_progress, "progress line on stderr even when it is not a terminal");

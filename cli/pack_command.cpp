@@ -41,6 +41,7 @@ struct InputError : std::runtime_error {
 /// creates nothing, and no output replaces another or an input.
 void apply_overrides(Scene& scene, const PackCommandOptions& o) {
   if (o.seed) scene.seed = *o.seed;
+  if (o.threads) scene.packer.threads = *o.threads;
   if (!o.format.empty() && o.output_path.empty()) throw InputError("--format needs -o PATH");
   if (!o.output_path.empty()) {
     OutputSpec out;

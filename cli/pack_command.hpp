@@ -12,6 +12,7 @@ struct PackCommandOptions {
   std::string format;                  ///< --format for -o
   std::string record_path;             ///< --record: JSON run record without particles
   std::optional<std::uint64_t> seed;   ///< --seed
+  std::optional<int> threads;          ///< -j/--threads (replaces the scene's packer.threads)
   bool quiet = false;
   bool progress = false;               ///< progress line on stderr
   bool force_progress = false;

@@ -45,11 +45,12 @@ inline std::vector<std::pair<std::string, std::uint64_t>> front_counter_entries(
           {"pairs_considered", c.pairs_considered}, {"pairs_pruned", c.pairs_pruned},
           {"solves", c.solves},                   {"candidates", c.candidates},
           {"rejected_overlap", c.rejected_overlap}, {"rejected_container", c.rejected_container},
-          {"rejected_off_face", c.rejected_off_face},
+          {"rejected_off_face", c.rejected_off_face}, {"rejected_block", c.rejected_block},
           {"wall_bodies", c.wall_bodies},         {"radii_drawn", c.radii_drawn},
           {"radii_unplaced", c.radii_unplaced},   {"max_neighbours", c.max_neighbours},
           {"voids_reopened", c.voids_reopened},   {"voids_seeded", c.voids_seeded},
-          {"two_contact_placements", c.two_contact_placements}, {"contact_bodies_capped", c.contact_bodies_capped}};
+          {"two_contact_placements", c.two_contact_placements}, {"contact_bodies_capped", c.contact_bodies_capped},
+          {"blocks", c.blocks},                   {"trimmed", c.trimmed}};
 }
 
 /// What the record and the summaries call the particles: the radius law, or each template's

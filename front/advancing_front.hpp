@@ -41,6 +41,7 @@
 #include "core/geometry/container.hpp"
 #include "core/io/scene.hpp"
 #include "core/sampling/rng.hpp"
+#include "front/front_block.hpp"
 #include "front/front_parts.hpp"
 #include "front/pack_result.hpp"
 #include "front/sphere_model.hpp"
@@ -52,12 +53,17 @@ class AdvancingFront {
  public:
   using Draft = typename Model::Draft;
   using Result = typename Model::Result;
+  using Block = FrontBlock<D, Draft>;
 
+  /// The whole container; or, with `block`, one block of it (front/block_front.hpp): centres in
+  /// block->reach only, grown from its fixed particles (or from a void if it has none), growth
+  /// ordered from block->seed_point.
   AdvancingFront(const Container<D>& container, const typename Model::Input& input, const PackerOptions& options,
-                 const StopCriteria& stop, std::uint64_t seed)
-      : container_(container), opt_(options), stop_(stop), rng_(seed), model_(container, input, options) {
+                 const StopCriteria& stop, std::uint64_t seed, const Block* block = nullptr)
+      : container_(container), opt_(options), stop_(stop), rng_(seed), block_(block),
+        model_(container, input, options, centres_domain(container, block)) {
     if (opt_.radius_pool < 1) throw std::invalid_argument("radius_pool must be >= 1");
-    seed_point_ = front_parts::local_seed_point<D>(container, opt_);
+    seed_point_ = block ? block->seed_point : front_parts::local_seed_point<D>(container, opt_);
     measure_ = container_.measure();
     // `auto`: on for narrow size ratios where the model measured it free (spheres: 1.2x faster at
     // the same density); shapes pay density for it (experiments/front-levers/RESULTS.md).
@@ -73,7 +79,8 @@ class AdvancingFront {
     auto elapsed = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
 
     for (int k = 0; k < opt_.radius_pool; ++k) pool_.push_back(draw(res));
-    initialise(res);
+    if (block_) add_fixed();  // no initial cluster: growth starts from them, or from a void
+    else initialise(res);
 
     std::uint64_t iter = 0;
     double next_progress = 0.5;
@@ -99,6 +106,10 @@ class AdvancingFront {
     }
     res.counters.radii_unplaced = pool_.size();
     model_.finish(res);
+    if (block_) {
+      const std::size_t fixed = block_->fixed_positions.size();
+      Model::keep_only(res, [&](std::size_t i) { return i >= fixed; });
+    }
     res.seconds = elapsed();
     return res;
   }
@@ -147,11 +158,38 @@ class AdvancingFront {
   void front_push(int id, const Vec<D>& c) {
     if (in_front_.size() <= static_cast<std::size_t>(id)) in_front_.resize(static_cast<std::size_t>(id) + 1, 0);
     in_front_[id] = 1;
-    if (opt_.front_pick == FrontPick::ClosestToSeed) heap_.push({(c - seed_point_).squaredNorm(), id});
+    if (opt_.front_pick == FrontPick::ClosestToSeed) heap_.push({growth_key(c), id});
     else list_.push_back(id);
   }
 
   void add_particle(const Draft& d, const Vec<D>& c) { front_push(model_.add(d, c), c); }
+
+  // ---- a block of a decomposed container ----
+  /// Where the model's neighbour grid must hold centres: the container, or the block's box
+  /// grown by its halo of fixed particles.
+  static Aabb<D> centres_domain(const Container<D>& container, const Block* block) {
+    Aabb<D> b = container.bounds();
+    if (!block) return b;
+    b.lo = b.lo.cwiseMax((block->reach.lo.array() - block->halo).matrix());
+    b.hi = b.hi.cwiseMin((block->reach.hi.array() + block->halo).matrix());
+    return b;
+  }
+  /// The fixed particles get the first ids, all in F (dropped from the result by run()).
+  void add_fixed() {
+    for (std::size_t i = 0; i < block_->fixed_drafts.size(); ++i)
+      add_particle(block_->fixed_drafts[i], block_->fixed_positions[i]);
+  }
+  /// The order of growth, smallest key first (the front's picks, the candidate kept, the void
+  /// seeded): the squared distance to the seed point.
+  double growth_key(const Vec<D>& x) const { return (x - seed_point_).squaredNorm(); }
+  /// A lower bound of growth_key() over the ball (c, reach).
+  double growth_key_bound(const Vec<D>& c, double reach) const {
+    const double d = std::max(0.0, (c - seed_point_).norm() - reach);
+    return d * d;
+  }
+  bool in_block(const Vec<D>& x) const { return !block_ || block_->reach.contains(x); }
+  bool fits(const Draft& d, const Vec<D>& x) const { return in_block(x) && model_.fits(d, x); }
+  bool fits_strictly(const Draft& d, const Vec<D>& x) const { return in_block(x) && model_.fits_strictly(d, x); }
 
   /// The front ran empty. If the container still has a void (room for a pooled draft on a
   /// lattice point of spacing ~kVoidSpacing r_max, touching nothing), growth resumes there: the
@@ -163,18 +201,18 @@ class AdvancingFront {
   /// empty. Returns false when there is no void: the normal end, at the cost of one lattice sweep.
   bool resume_at_voids(Result& res) {
     const std::size_t largest = largest_in_pool();
-    const Aabb<D> box = container_.bounds();
+    const Aabb<D> box = block_ ? block_->reach : container_.bounds();
     bool reopened = false, found = false;
     Vec<D> best;
     std::size_t best_k = largest;
-    double best_d2 = std::numeric_limits<double>::infinity();
+    double best_key = std::numeric_limits<double>::infinity();
     front_parts::for_each_lattice_point<D>(box, Model::kVoidSpacing * model_.r_max(), Model::kVoidPoints,
                                            [&](std::int64_t flat, const Vec<D>& p) {
       const std::optional<std::size_t> k = model_.void_draft(pool_, largest, p);
       if (!k) return;
       if (voids_reopened_.insert(flat).second) reopened |= reopen_around(p, 3 * radius(pool_[*k]));
-      const double d2 = (p - seed_point_).squaredNorm();
-      if (d2 < best_d2) best_d2 = d2, best = p, best_k = *k, found = true;
+      const double key = growth_key(p);
+      if (key < best_key) best_key = key, best = p, best_k = *k, found = true;
     });
     if (reopened) {
       ++res.counters.voids_reopened;
@@ -237,7 +275,7 @@ class AdvancingFront {
     for (int attempt = 0; attempt < 64 && i2 < 0; ++attempt) {
       const std::size_t k2 = largest_in_pool();
       const Vec<D> c2 = model_.touching(i1, pool_[k2], front_parts::random_unit<D>(rng_));
-      if (!model_.fits(pool_[k2], c2)) continue;
+      if (!fits(pool_[k2], c2)) continue;
       add_particle(take_from_pool(k2, res), c2);
       i2 = static_cast<int>(model_.count()) - 1;
     }
@@ -248,7 +286,7 @@ class AdvancingFront {
         return model_.room(d2, model_.beside(i1, d2, v));
       });
       const Vec<D> c2 = model_.touching(i1, d2, u);
-      if (model_.fits(d2, c2)) {
+      if (fits(d2, c2)) {
         add_particle(take_from_pool(k2, res), c2);
         i2 = static_cast<int>(model_.count()) - 1;
       }
@@ -259,7 +297,7 @@ class AdvancingFront {
       const Draft& d3 = pool_[k3];
       for (int attempt = 0; attempt < 64; ++attempt) {
         const Vec3 c3 = model_.touching_both(i1, i2, d3, 2 * kPi * rng_.uniform01());  // a random point of it
-        if (!model_.fits(d3, c3)) continue;
+        if (!fits(d3, c3)) continue;
         add_particle(take_from_pool(k3, res), c3);
         return true;
       }
@@ -277,7 +315,7 @@ class AdvancingFront {
           if (g > best_room) best_room = g, best_phi = phi;
         }
       const Vec3 c3 = model_.touching_both(i1, i2, d3, best_phi);
-      if (model_.fits(d3, c3)) add_particle(take_from_pool(k3, res), c3);
+      if (fits(d3, c3)) add_particle(take_from_pool(k3, res), c3);
     }
     return true;
   }
@@ -286,20 +324,20 @@ class AdvancingFront {
   /// the segment to the container's interior point, where it does (a seed point in a corner is
   /// a common choice). None if it fits nowhere there.
   std::optional<Vec<D>> first_centre(const Draft& d, const Vec<D>& where) const {
-    if (model_.fits_strictly(d, where)) return where;
+    if (fits_strictly(d, where)) return where;
     const Vec<D> deep = container_.interior_point();
-    if (model_.fits(d, deep)) {
+    if (fits(d, deep)) {
       double lo = 0, hi = 1;  // fits at hi, not at lo
       for (int it = 0; it < 60; ++it) {
         const double mid = 0.5 * (lo + hi);
-        (model_.fits_strictly(d, where + mid * (deep - where)) ? hi : lo) = mid;
+        (fits_strictly(d, where + mid * (deep - where)) ? hi : lo) = mid;
       }
       const Vec<D> x = where + hi * (deep - where);
-      if (model_.fits(d, x)) return x;
+      if (fits(d, x)) return x;
     }
     // A void found after the front ran empty, within the tolerance of its walls, with the
     // interior point long occupied: where it is.
-    if (model_.fits(d, where)) return where;
+    if (fits(d, where)) return where;
     return std::nullopt;
   }
 
@@ -410,10 +448,9 @@ class AdvancingFront {
     const double r0 = model_.radius(s0);
     const bool keep_first = opt_.candidate == CandidateChoice::First;
     bool found = false;
-    double best_d2 = 0;
-    // Every candidate lies within r0 + r of c0: a lower bound for its distance to the seed.
-    const double lower_bound_here = std::max(0.0, (c0 - seed_point_).norm() - r0 - r);
-    const double lower_bound2 = lower_bound_here * lower_bound_here;
+    double best_key = 0;
+    // Every candidate lies within r0 + r of c0: a lower bound for its growth key.
+    const double lower_bound = growth_key_bound(c0, r0 + r);
 
     model_.begin_placement(s0, d, bodies_);
     std::array<Placement<D>, Model::kMaxPlacements> out;
@@ -429,19 +466,20 @@ class AdvancingFront {
     // true to end the scan.
     auto test = [&](const Vec<D>& x, int rank) -> bool {
       ++res.counters.candidates;
-      double d2 = 0;
+      double key = 0;
       if (!keep_first) {
-        d2 = (x - seed_point_).squaredNorm();
-        if (found && (rank > best_rank || (rank == best_rank && d2 >= best_d2))) return false;
+        key = growth_key(x);
+        if (found && (rank > best_rank || (rank == best_rank && key >= best_key))) return false;
       }
+      if (!in_block(x)) { ++res.counters.rejected_block; return false; }
       if (model_.overlaps_neighbour(d, x)) { ++res.counters.rejected_overlap; return false; }
       if (!model_.inside(d, x)) { ++res.counters.rejected_container; return false; }
       if (rank == 0 && !model_.touches_boundary(d, x)) { ++res.counters.rejected_container; return false; }
       found = true;
       best = x;
-      best_d2 = d2;
+      best_key = key;
       best_rank = rank;
-      return keep_first || (rank == 0 && best_d2 <= lower_bound2);
+      return keep_first || (rank == 0 && best_key <= lower_bound);
     };
     auto consider = [&](int i, int j) -> bool {  // returns true to end the scan
       ++res.counters.solves;
@@ -498,6 +536,7 @@ class AdvancingFront {
   PackerOptions opt_;
   StopCriteria stop_;
   Rng rng_;
+  const Block* block_;  // null: the whole container
   Model model_;
   Vec<D> seed_point_;
   bool probe_smallest_ = false;

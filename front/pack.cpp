@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "front/advancing_front.hpp"
+#include "front/block_front.hpp"
 
 namespace fp {
 
@@ -22,6 +23,10 @@ PackResult<D> pack(const Scene& scene, const ProgressFn& progress) {
   const Container<D>* container = scene.container<D>();
   if (!container || !scene.radii) throw std::invalid_argument("pack: scene has no container or no size distribution");
   if (scene.packer.method != "front") throw std::invalid_argument("pack: unknown method '" + scene.packer.method + "'");
+  if (scene.packer.in_blocks()) {
+    BlockFront<D, SphereModel<D>> blocks(*container, *scene.radii, scene.packer, scene.stop, scene.seed);
+    return blocks.run(thread_count(scene.packer.threads), progress);
+  }
   AdvancingFront<D> front(*container, *scene.radii, scene.packer, scene.stop, scene.seed);
   return front.run(progress);
 }

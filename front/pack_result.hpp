@@ -1,5 +1,6 @@
 #pragma once
 // What a packer run returns: the particles and the counters that explain where time went.
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -21,6 +22,7 @@ struct FrontCounters {
   std::uint64_t rejected_container = 0;   ///< candidates not inside the container
   std::uint64_t rejected_overlap = 0;     ///< candidates overlapping a neighbour
   std::uint64_t rejected_off_face = 0;    ///< candidates tangent to a wall's plane beyond its face (mesh facet, polygon edge)
+  std::uint64_t rejected_block = 0;       ///< candidates outside their block (threads: front/block_front.hpp)
   std::uint64_t wall_bodies = 0;          ///< walls offered to the solver as bodies
   std::uint64_t radii_drawn = 0;          ///< radii drawn from the distribution
   std::uint64_t radii_unplaced = 0;       ///< radii drawn but never placed (the pool at the end)
@@ -29,6 +31,33 @@ struct FrontCounters {
   std::uint64_t voids_seeded = 0;         ///< voids found after F ran empty and given a new seed particle
   std::uint64_t two_contact_placements = 0;  ///< 3D: particles placed touching only s0 and one body (no pair had a position)
   std::uint64_t contact_bodies_capped = 0;   ///< pair scans limited to the nearest contact bodies (a V of thousands)
+  std::uint64_t blocks = 0;               ///< threads: blocks the container was cut into (0: one front)
+  std::uint64_t trimmed = 0;              ///< threads: particles placed, then dropped to honour a count or fraction stop
+
+  /// The counters of two fronts run side by side (the blocks of front/block_front.hpp).
+  FrontCounters& operator+=(const FrontCounters& o) {
+    front_picks += o.front_picks;
+    front_removals += o.front_removals;
+    pairs_considered += o.pairs_considered;
+    pairs_pruned += o.pairs_pruned;
+    solves += o.solves;
+    candidates += o.candidates;
+    rejected_container += o.rejected_container;
+    rejected_overlap += o.rejected_overlap;
+    rejected_off_face += o.rejected_off_face;
+    rejected_block += o.rejected_block;
+    wall_bodies += o.wall_bodies;
+    radii_drawn += o.radii_drawn;
+    radii_unplaced += o.radii_unplaced;
+    max_neighbours = std::max(max_neighbours, o.max_neighbours);
+    voids_reopened += o.voids_reopened;
+    voids_seeded += o.voids_seeded;
+    two_contact_placements += o.two_contact_placements;
+    contact_bodies_capped += o.contact_bodies_capped;
+    blocks += o.blocks;
+    trimmed += o.trimmed;
+    return *this;
+  }
 };
 
 /// Where the contact solves of non-spherical particles went (all zero for spheres, whose analytic
@@ -40,6 +69,16 @@ struct SolverCounters {
   std::uint64_t gap_evaluations = 0;       ///< gap-vector evaluations by the minimisation solver
   std::uint64_t minima_rejected = 0;       ///< minima whose gaps stayed above the tolerance
   std::uint64_t fcl_queries = 0;           ///< FCL distance queries of the narrow phase
+
+  SolverCounters& operator+=(const SolverCounters& o) {
+    analytic_solves += o.analytic_solves;
+    minimisation_solves += o.minimisation_solves;
+    minimisations += o.minimisations;
+    gap_evaluations += o.gap_evaluations;
+    minima_rejected += o.minima_rejected;
+    fcl_queries += o.fcl_queries;
+    return *this;
+  }
 };
 
 /// What one run of the front returns, for spheres (`Particles` = Packing<D>, SoA) and for

@@ -48,15 +48,22 @@ class ShapeModel {
   /// 0.719, ellipses 0.746 -> 0.720, capsules 0.739 -> 0.709; capsules in the femur 0.487 -> 0.473).
   static constexpr bool kProbeSmallestByDefault = false;
 
-  ShapeModel(const Container<D>& container, const Input& templates, const PackerOptions& options)
+  ShapeModel(const Container<D>& container, const Input& templates, const PackerOptions& options,
+              const Aabb<D>& centres)
       : container_(container), templates_(check(templates)), tol_(options.minimisation.gap_tolerance),
         registry_(np_, options.minimisation, options.contact_solver == ContactSolverChoice::Auto),
-        containment_(container, np_), r_min_(min_bounding(templates)), r_max_(max_bounding(templates)),
-        grid_(grid_domain(container, r_max_), r_min_, r_max_, options.grid_cell_factor, options.hierarchical_grid_ratio) {}
+        containment_(container, np_), r_min_(min_bounding(templates)), r_max_(r_max_of(templates)),
+        grid_(grid_domain(centres, r_max_), r_min_, r_max_, options.grid_cell_factor, options.hierarchical_grid_ratio) {}
 
   const NeighbourGrid<D>& grid() const { return grid_; }
   double r_min() const { return r_min_; }
   double r_max() const { return r_max_; }
+  /// The largest circumscribed radius the templates can draw.
+  static double r_max_of(const Input& ts) {
+    double r = 0;
+    for (const auto& t : ts) r = std::max(r, t.bounding_max());
+    return r;
+  }
   static double radius(const Draft& d) { return d.bounding_radius(); }
 
   void attach(Result& res, const StopCriteria&) {
@@ -75,6 +82,33 @@ class ShapeModel {
   }
 
   Draft draw(Rng& rng) const { return draw_draft<D>(templates_, rng); }
+
+  // ---- a result's particles, for the blocks of a decomposed container (front/block_front.hpp) ----
+  static std::size_t size(const Result& res) { return res.packing.size(); }
+  static Draft draft_of(const Result& res, std::size_t i) {
+    const Particle<D>& p = res.packing.particles[i];
+    return Draft{p.template_id, p.size, p.shape, p.pose.rotation};
+  }
+  static const Vec<D>& position_of(const Result& res, std::size_t i) { return res.packing.particles[i].pose.position; }
+  static double measure_of(const Result& res, std::size_t i) { return res.packing.particles[i].shape->measure(); }
+  /// Appends particle i of `from` to `to`.
+  static void append(Result& to, const Result& from, std::size_t i) {
+    to.packing.particles.push_back(from.packing.particles[i]);
+    to.solid_measure += measure_of(from, i);
+  }
+  /// Keeps the particles i with keep(i), in order.
+  template <class Keep>
+  static void keep_only(Result& res, Keep&& keep) {
+    auto& P = res.packing.particles;
+    std::size_t n = 0;
+    res.solid_measure = 0;
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      if (!keep(i)) continue;
+      if (n != i) P[n] = std::move(P[i]);
+      res.solid_measure += measure_of(res, n++);
+    }
+    P.resize(n);
+  }
 
   const Particle<D>& particle(int id) const { return res_->packing.particles[static_cast<std::size_t>(id)]; }
   Vec<D> position(int id) const { return particle(id).pose.position; }
@@ -301,13 +335,8 @@ class ShapeModel {
     for (const auto& t : ts) r = std::min(r, t.bounding_min());
     return r;
   }
-  static double max_bounding(const Input& ts) {
-    double r = 0;
-    for (const auto& t : ts) r = std::max(r, t.bounding_max());
-    return r;
-  }
-  static Aabb<D> grid_domain(const Container<D>& c, double r_max) {
-    Aabb<D> b = c.bounds();
+  /// `centres`: where the centres can be (the container, or a block and its halo).
+  static Aabb<D> grid_domain(Aabb<D> b, double r_max) {
     b.lo.array() -= r_max;
     b.hi.array() += r_max;
     return b;

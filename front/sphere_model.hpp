@@ -37,15 +37,17 @@ class SphereModel {
   static constexpr std::uint64_t kClockEvery = 1024;   ///< picks between clock reads (a pick costs ~10 us)
   static constexpr bool kProbeSmallestByDefault = true;  ///< probe_smallest: auto (narrow ratios)
 
-  SphereModel(const Container<D>& container, const RadiusDistribution& radii, const PackerOptions& options)
+  SphereModel(const Container<D>& container, const RadiusDistribution& radii, const PackerOptions& options,
+              const Aabb<D>& centres)
       : container_(container), dist_(radii), tol_(options.contact_tolerance),
         face_slack_(2 * std::sqrt(tol_ * (2 + tol_)) + 1e-12),
-        grid_(grid_domain(container, radii.r_max()), radii.r_min(), radii.r_max(), options.grid_cell_factor,
+        grid_(grid_domain(centres, radii.r_max()), radii.r_min(), radii.r_max(), options.grid_cell_factor,
               options.hierarchical_grid_ratio) {}
 
   const NeighbourGrid<D>& grid() const { return grid_; }
   double r_min() const { return dist_.r_min(); }
   double r_max() const { return dist_.r_max(); }
+  static double r_max_of(const Input& radii) { return radii.r_max(); }
   static double radius(Draft r) { return r; }
 
   void attach(Result& res, const StopCriteria& stop) {
@@ -60,6 +62,32 @@ class SphereModel {
   }
 
   Draft draw(Rng& rng) const { return dist_.sample(rng); }
+
+  // ---- a result's particles, for the blocks of a decomposed container (front/block_front.hpp) ----
+  static std::size_t size(const Result& res) { return res.packing.size(); }
+  static Draft draft_of(const Result& res, std::size_t i) { return res.packing.radii[i]; }
+  static const Vec<D>& position_of(const Result& res, std::size_t i) { return res.packing.centers[i]; }
+  static double measure_of(const Result& res, std::size_t i) { return ball_measure<D>(res.packing.radii[i]); }
+  /// Appends particle i of `from` to `to`.
+  static void append(Result& to, const Result& from, std::size_t i) {
+    to.packing.add(from.packing.centers[i], from.packing.radii[i]);
+    to.solid_measure += measure_of(from, i);
+  }
+  /// Keeps the particles i with keep(i), in order.
+  template <class Keep>
+  static void keep_only(Result& res, Keep&& keep) {
+    auto& P = res.packing;
+    std::size_t n = 0;
+    res.solid_measure = 0;
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      if (!keep(i)) continue;
+      P.centers[n] = P.centers[i];
+      P.radii[n] = P.radii[i];
+      res.solid_measure += measure_of(res, n++);
+    }
+    P.centers.resize(n);
+    P.radii.resize(n);
+  }
 
   Vec<D> position(int id) const { return res_->packing.centers[id]; }
   double radius(int id) const { return res_->packing.radii[id]; }
@@ -206,8 +234,8 @@ class SphereModel {
   bool touches_boundary(Draft r, const Vec<D>& x) const { return container_.signed_distance(x) >= -r - tol_ * r; }
 
  private:
-  static Aabb<D> grid_domain(const Container<D>& c, double r_max) {
-    Aabb<D> b = c.bounds();
+  /// `centres`: where the centres can be (the container, or a block and its halo).
+  static Aabb<D> grid_domain(Aabb<D> b, double r_max) {
     b.lo.array() -= r_max;
     b.hi.array() += r_max;
     return b;

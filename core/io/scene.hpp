@@ -42,6 +42,11 @@ struct MinimisationOptions {
 /// paper's Sect. 3.2 method alone; for comparisons).
 enum class ContactSolverChoice { Auto, Minimisation };
 
+/// The smallest block edge of a packing grown in blocks, in largest particle sizes: two blocks
+/// growing at once are a block apart and reach 2 r_max towards each other
+/// (front/block_front.hpp), which leaves more than the 2 r_max within which particles touch.
+inline constexpr double kMinBlockEdge = 7.0;
+
 struct PackerOptions {
   std::string method = "front";              ///< the advancing front (the only method of this issue)
   FrontPick front_pick = FrontPick::ClosestToSeed;
@@ -61,6 +66,12 @@ struct PackerOptions {
   std::optional<std::vector<double>> seed_point;  ///< where growth starts (default: container interior point)
   MinimisationOptions minimisation;          ///< non-spherical particles only
   ContactSolverChoice contact_solver = ContactSolverChoice::Auto;  ///< non-spherical particles only
+  /// Threads (0: every hardware thread). Above 1 the container is grown in blocks
+  /// (front/block_front.hpp), whose output does not depend on the thread count.
+  int threads = 1;
+  /// The blocks' edge (the automatic one when unset); setting it grows in blocks even on one thread.
+  std::optional<double> block_edge;
+  bool in_blocks() const { return threads != 1 || block_edge.has_value(); }
 };
 
 struct StopCriteria {

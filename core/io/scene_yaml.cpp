@@ -576,7 +576,7 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
                   std::map<std::string, SourceSpot>& spots) {
   const Map m = v.map();
   m.check_known({"method", "front", "candidate", "pair_order", "contact_bodies", "probe_smallest", "walls", "radius_pool", "contact_tolerance",
-                 "grid_cell_factor", "hierarchical_grid_ratio", "seed_point", "minimisation", "contact_solver"});
+                 "grid_cell_factor", "hierarchical_grid_ratio", "seed_point", "minimisation", "contact_solver", "threads", "block_edge"});
   if (auto x = m.find("contact_solver")) {
     if (!shapes)
       x->fail("used by particle templates only; this scene has spheres ('particles: {radius: ...}'), whose contacts are "
@@ -635,6 +635,17 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
     const double f = x->number();
     if (!(f > 1)) x->fail("must be > 1 (got " + x->node().Scalar() + ")");
     p.hierarchical_grid_ratio = f;
+  }
+  if (auto x = m.find("threads")) {
+    const std::uint64_t n = x->unsigned_integer();
+    if (n > kMaxThreads) x->fail("must be an integer from 0 (every hardware thread) to " + std::to_string(kMaxThreads) + " (got " + x->node().Scalar() + ")");
+    p.threads = static_cast<int>(n);
+  }
+  if (auto x = m.find("block_edge")) {
+    const double e = x->number();
+    if (!(e > 0 && std::isfinite(e))) x->fail("must be a positive length (got " + x->node().Scalar() + ")");
+    p.block_edge = e;
+    spots["packer.block_edge"] = x->spot();
   }
   if (auto x = m.find("seed_point")) {
     const Vec<D> s = x->vec<D>(dim_text(D));
@@ -887,6 +898,12 @@ void parse_body(const Map& root, Scene& scene, const Context& ctx) {
   for (const auto& t : scene.particle_templates) r_min = std::min(r_min, t.size->r_min()), r_max = std::max(r_max, t.size->r_max());
   check_length(particles_value, "the smallest particle size", r_min, D);
   check_length(particles_value, "the largest particle size", r_max, D);
+  if (scene.packer.block_edge && *scene.packer.block_edge < kMinBlockEdge * r_max) {
+    std::ostringstream os;
+    os << "must be at least " << kMinBlockEdge << " x the largest particle size " << r_max << " = " << kMinBlockEdge * r_max
+       << ": two blocks growing at once must be out of each other's reach";
+    root.find("packer")->map().find("block_edge")->fail(os.str());
+  }
   if (container->bounds().size().maxCoeff() > kFarFrameExtent * r_min) {
     Vec<D> seed = container->interior_point() + container->origin();
     if (scene.packer.seed_point)

@@ -70,6 +70,9 @@ inline constexpr std::size_t kMaxSceneBytes = 16u << 20;  // a polygon of 3 x 10
 /// 2.4x the time of 4, 1024 costs 29x).
 inline constexpr std::uint64_t kMaxRadiusPool = 1024;
 
+/// Most threads a scene may ask for (each holds a block's front and neighbour grid).
+inline constexpr std::uint64_t kMaxThreads = 4096;
+
 /// Every length of a scene (the container's extent, particle sizes) lies in [kMinLength,
 /// kMaxLength], so that volumes are ordinary doubles.
 inline constexpr double kMinLength = 1e-100;

@@ -1,0 +1,243 @@
+#pragma once
+// The advancing front on several threads (issue 11). The container's bounding box is cut into
+// blocks (front/block_layout.hpp); each block grows with its own front, neighbour grid and random
+// stream, placing centres only inside its box (and a little into the neighbours that grew before
+// it, to fill the pockets of their faces). A block grows once every neighbour of lower rank has
+// grown, and never beside a growing neighbour: blocks growing at once are at least a block edge
+// (>= 7 r_max) apart, so nothing one places can touch what another places. A block grows against
+// what its earlier neighbours placed: their particles within 2 r_max of where it places centres
+// are its fixed particles (obstacles, contact bodies, its initial front), so block faces are
+// filled as the front fills anywhere; its growth is ordered from a point beyond its low corner.
+//
+// The layout depends on the scene only, and a block's input is what its earlier neighbours
+// placed: the output is identical for every thread count (1 included). It differs from the single
+// front's. Stops: a count or a volume fraction is honoured by growing every block, then keeping
+// the particles closest to the seed point (the single front grows closest-first as well); the
+// dropped ones are counted (`trimmed`). A time limit stops every block (then the output depends
+// on timing, as the single front's does).
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <exception>
+#include <mutex>
+#include <queue>
+#include <thread>
+#include <vector>
+
+#include "core/geometry/container.hpp"
+#include "core/io/scene.hpp"
+#include "front/advancing_front.hpp"
+#include "front/block_layout.hpp"
+#include "front/front_block.hpp"
+
+namespace fp {
+
+/// Threads to use for `requested` (0: every hardware thread).
+inline int thread_count(int requested) {
+  if (requested > 0) return requested;
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+template <int D, class Model>
+class BlockFront {
+ public:
+  using Result = typename Model::Result;
+  using Block = FrontBlock<D, typename Model::Draft>;
+
+  BlockFront(const Container<D>& container, const typename Model::Input& input, const PackerOptions& options,
+             const StopCriteria& stop, std::uint64_t seed)
+      : container_(container), input_(input), opt_(options), stop_(stop), seed_(seed),
+        r_max_(Model::r_max_of(input)),
+        layout_(container.bounds(), r_max_, options.block_edge.value_or(0.0)) {}
+
+  const BlockLayout<D>& layout() const { return layout_; }
+
+  Result run(int threads, const ProgressFn& progress = {}) {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+    const int n = layout_.count();
+    results_.assign(static_cast<std::size_t>(n), Result{});
+
+    // Each block waits for its neighbours of lower rank; ready blocks are taken lowest rank first.
+    std::vector<int> waiting(static_cast<std::size_t>(n), 0);
+    std::vector<std::vector<int>> later(static_cast<std::size_t>(n));
+    using Ready = std::pair<int, int>;  // (rank, block)
+    std::priority_queue<Ready, std::vector<Ready>, std::greater<Ready>> ready;
+    for (int b = 0; b < n; ++b) {
+      for (const int nb : layout_.neighbours(b)) {
+        if (layout_.rank(nb) < layout_.rank(b)) ++waiting[static_cast<std::size_t>(b)];
+        else later[static_cast<std::size_t>(b)].push_back(nb);
+      }
+      if (waiting[static_cast<std::size_t>(b)] == 0) ready.push({layout_.rank(b), b});
+    }
+
+    std::mutex m;
+    std::condition_variable changed;
+    int done = 0;
+    std::uint64_t placed = 0;
+    double solid = 0, next_progress = 0.5;
+    const double measure = container_.measure();
+    bool timed_out = false;
+    std::exception_ptr error;
+    auto work = [&] {
+      std::unique_lock<std::mutex> lock(m);
+      for (;;) {
+        changed.wait(lock, [&] { return !ready.empty() || done == n || error; });
+        if (done == n || error) return;
+        const int b = ready.top().second;
+        ready.pop();
+        lock.unlock();
+        Result r;
+        std::exception_ptr failed;
+        try {
+          StopCriteria s;  // counts and fractions are honoured after growth (the class comment)
+          if (stop_.time_limit_seconds) s.time_limit_seconds = std::max(0.0, *stop_.time_limit_seconds - elapsed());
+          if (!s.time_limit_seconds || *s.time_limit_seconds > 0) r = grow(b, s);
+          else r.stop = StopReason::TimeLimit;
+        } catch (...) {
+          failed = std::current_exception();
+        }
+        lock.lock();
+        if (failed) {
+          if (!error) error = failed;
+          changed.notify_all();
+          return;
+        }
+        placed += Model::size(r);
+        solid += r.solid_measure;
+        timed_out |= r.stop == StopReason::TimeLimit;
+        results_[static_cast<std::size_t>(b)] = std::move(r);
+        if (progress && elapsed() >= next_progress) {
+          progress(placed, elapsed(), solid / measure);
+          next_progress = elapsed() + 0.5;
+        }
+        ++done;
+        for (const int nb : later[static_cast<std::size_t>(b)])
+          if (--waiting[static_cast<std::size_t>(nb)] == 0) ready.push({layout_.rank(nb), nb});
+        changed.notify_all();
+      }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < std::min(threads, n); ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+    if (error) std::rethrow_exception(error);
+
+    Result out = merge(timed_out);
+    out.seconds = elapsed();
+    return out;
+  }
+
+ private:
+  /// How far a block's centres reach into the face neighbours that grew before it, in r_max.
+  /// Two blocks growing at once are a block edge e apart and may both reach into the block
+  /// between them: their new particles stay e - 2 kReach r_max > 2 r_max apart.
+  static constexpr double kReach = 2.0;
+  static_assert(BlockLayout<D>::kMinEdge > 2 * kReach + 2);
+  /// Where a block's growth is ordered from: its low corner moved back by kSeedBack block edges
+  /// (measured in experiments/threads: at the corner itself the fronts from the low faces meet
+  /// the block's own at an angle and leave a seam; farther back the cap flattens).
+  static constexpr double kSeedBack = 1.0;
+
+  /// Grows block b against the particles its earlier neighbours placed near its box.
+  Result grow(int b, const StopCriteria& stop) const {
+    Block block;
+    block.box = block.reach = layout_.box(b);
+    block.seed_point = block.box.lo - kSeedBack * (block.box.hi - block.box.lo);
+    // Two particles can touch only if their centres are within 2 r_max; the margin covers the
+    // contact tolerance and the rounding of the distance.
+    block.halo = 2 * r_max_ * (1 + 1e-6);
+    const std::array<int, D> k = layout_.coords(b);
+    for (int a = 0; a < D; ++a)
+      if (k[a] > 0) block.reach.lo[a] -= kReach * r_max_;  // the low face neighbour grew first
+    const int rank = layout_.rank(b);
+    for (const int nb : layout_.neighbours(b)) {
+      if (layout_.rank(nb) > rank) continue;  // grows later: nothing placed yet
+      const Result& r = results_[static_cast<std::size_t>(nb)];
+      for (std::size_t i = 0; i < Model::size(r); ++i) {
+        const Vec<D>& x = Model::position_of(r, i);
+        if (distance_to_box(block.reach, x) > block.halo) continue;
+        block.fixed_drafts.push_back(Model::draft_of(r, i));
+        block.fixed_positions.push_back(x);
+      }
+    }
+    AdvancingFront<D, Model> front(container_, input_, opt_, stop, block_seed(b), &block);
+    return front.run();
+  }
+
+  /// A block's random stream: the scene's seed and the block's index, spread by splitmix64 (Rng).
+  std::uint64_t block_seed(int b) const { return seed_ + 0x9E3779B97F4A7C15ULL * (static_cast<std::uint64_t>(b) + 1); }
+
+  /// The blocks' particles in block order, trimmed to the stop's count or fraction; the blocks'
+  /// results are released as they are copied.
+  Result merge(bool timed_out) {
+    std::size_t total = 0;
+    for (const Result& r : results_) total += Model::size(r);
+    const std::vector<char> keep = kept_by_stop(total);
+    std::size_t kept = 0;
+
+    Result out;
+    Model model(container_, input_, opt_, layout_.box(0));  // sets the tolerance, origin, names
+    model.attach(out, stop_);
+    std::size_t flat = 0;
+    for (Result& r : results_) {
+      for (std::size_t i = 0; i < Model::size(r); ++i, ++flat)
+        if (keep.empty() || keep[flat]) Model::append(out, r, i), ++kept;
+      out.counters += r.counters;
+      out.solver += r.solver;
+      out.grid_bytes = std::max(out.grid_bytes, r.grid_bytes);
+      out.grid_levels = std::max(out.grid_levels, r.grid_levels);
+      r = Result{};
+    }
+    out.counters.blocks = static_cast<std::uint64_t>(layout_.count());
+    out.counters.trimmed = total - kept;
+    if (timed_out) out.stop = StopReason::TimeLimit;
+    else if (stop_.max_particles && kept == *stop_.max_particles) out.stop = StopReason::ParticleCount;
+    else if (stop_.target_volume_fraction && kept < total) out.stop = StopReason::VolumeFraction;
+    else out.stop = StopReason::FrontExhausted;
+    return out;
+  }
+
+  /// Per particle (in block order): kept by the count or fraction stop, the ones closest to the
+  /// seed point first (ties by order). Empty: no such stop, keep all.
+  std::vector<char> kept_by_stop(std::size_t total) const {
+    if (!stop_.max_particles && !stop_.target_volume_fraction) return {};
+    struct Ref {
+      double d2;
+      std::size_t flat;
+      std::uint32_t block, i;
+    };
+    const Vec<D> seed_point = front_parts::local_seed_point<D>(container_, opt_);
+    std::vector<Ref> refs;
+    refs.reserve(total);
+    for (std::size_t b = 0; b < results_.size(); ++b)
+      for (std::size_t i = 0; i < Model::size(results_[b]); ++i)
+        refs.push_back({(Model::position_of(results_[b], i) - seed_point).squaredNorm(), refs.size(),
+                        static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(i)});
+    std::sort(refs.begin(), refs.end(), [](const Ref& a, const Ref& c) { return a.d2 < c.d2 || (a.d2 == c.d2 && a.flat < c.flat); });
+    std::size_t kept = stop_.max_particles ? std::min<std::size_t>(total, *stop_.max_particles) : total;
+    if (stop_.target_volume_fraction) {
+      const double target = *stop_.target_volume_fraction * container_.measure();
+      double solid = 0;
+      std::size_t k = 0;
+      for (; k < kept && solid < target; ++k) solid += Model::measure_of(results_[refs[k].block], refs[k].i);
+      kept = k;
+    }
+    std::vector<char> keep(total, 0);
+    for (std::size_t k = 0; k < kept; ++k) keep[refs[k].flat] = 1;
+    return keep;
+  }
+
+  const Container<D>& container_;
+  const typename Model::Input& input_;
+  PackerOptions opt_;
+  StopCriteria stop_;
+  std::uint64_t seed_;
+  double r_max_;
+  BlockLayout<D> layout_;
+  std::vector<Result> results_;  // per block
+};
+
+}  // namespace fp
