@@ -57,13 +57,13 @@ class AdvancingFront {
 
   /// The whole container; or, with `block`, one block of it (front/block_front.hpp): centres in
   /// block->reach only, grown from its fixed particles (or from a void if it has none), growth
-  /// ordered from block->seed_point.
+  /// ordered along block->growth_direction.
   AdvancingFront(const Container<D>& container, const typename Model::Input& input, const PackerOptions& options,
                  const StopCriteria& stop, std::uint64_t seed, const Block* block = nullptr)
       : container_(container), opt_(options), stop_(stop), rng_(seed), block_(block),
         model_(container, input, options, centres_domain(container, block)) {
     if (opt_.radius_pool < 1) throw std::invalid_argument("radius_pool must be >= 1");
-    seed_point_ = block ? block->seed_point : front_parts::local_seed_point<D>(container, opt_);
+    seed_point_ = block ? block->box.lo : front_parts::local_seed_point<D>(container, opt_);
     measure_ = container_.measure();
     // `auto`: on for narrow size ratios where the model measured it free (spheres: 1.2x faster at
     // the same density); shapes pay density for it (experiments/front-levers/RESULTS.md).
@@ -180,10 +180,15 @@ class AdvancingFront {
       add_particle(block_->fixed_drafts[i], block_->fixed_positions[i]);
   }
   /// The order of growth, smallest key first (the front's picks, the candidate kept, the void
-  /// seeded): the squared distance to the seed point.
-  double growth_key(const Vec<D>& x) const { return (x - seed_point_).squaredNorm(); }
+  /// seeded): the squared distance to the seed point; in a block, the distance along its growth
+  /// direction (< 0 before its low corner, where the fixed particles are).
+  double growth_key(const Vec<D>& x) const {
+    if (block_) return block_->growth_direction.dot(x - seed_point_);
+    return (x - seed_point_).squaredNorm();
+  }
   /// A lower bound of growth_key() over the ball (c, reach).
   double growth_key_bound(const Vec<D>& c, double reach) const {
+    if (block_) return growth_key(c) - block_->growth_direction.norm() * reach;
     const double d = std::max(0.0, (c - seed_point_).norm() - reach);
     return d * d;
   }
@@ -213,7 +218,7 @@ class AdvancingFront {
       if (voids_reopened_.insert(flat).second) reopened |= reopen_around(p, 3 * radius(pool_[*k]));
       const double key = growth_key(p);
       if (key < best_key) best_key = key, best = p, best_k = *k, found = true;
-    });
+    }, block_ != nullptr);
     if (reopened) {
       ++res.counters.voids_reopened;
       return true;

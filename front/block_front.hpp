@@ -6,8 +6,12 @@
 // grown, and never beside a growing neighbour: blocks growing at once are at least a block edge
 // (>= 7 r_max) apart, so nothing one places can touch what another places. A block grows against
 // what its earlier neighbours placed: their particles within 2 r_max of where it places centres
-// are its fixed particles (obstacles, contact bodies, its initial front), so block faces are
-// filled as the front fills anywhere; its growth is ordered from a point beyond its low corner.
+// are its fixed particles (obstacles, contact bodies, its initial front). Its growth is ordered
+// along the diagonal (1, 1, 1): a plane sweeping from its low corner, where its earlier
+// neighbours are, meeting its high faces (free) and the container's walls obliquely. (Measured
+// in experiments/threads: a cap from a point beyond the low corner leaves looser seams at the
+// low faces the nearer the point; a sweep along one axis leaves holes where it ends against a
+// wall parallel to its plane.)
 //
 // The layout depends on the scene only, and a block's input is what its earlier neighbours
 // placed: the output is identical for every thread count (1 included). It differs from the single
@@ -136,16 +140,10 @@ class BlockFront {
   /// between them: their new particles stay e - 2 kReach r_max > 2 r_max apart.
   static constexpr double kReach = 2.0;
   static_assert(BlockLayout<D>::kMinEdge > 2 * kReach + 2);
-  /// Where a block's growth is ordered from: its low corner moved back by kSeedBack block edges
-  /// (measured in experiments/threads: at the corner itself the fronts from the low faces meet
-  /// the block's own at an angle and leave a seam; farther back the cap flattens).
-  static constexpr double kSeedBack = 1.0;
-
   /// Grows block b against the particles its earlier neighbours placed near its box.
   Result grow(int b, const StopCriteria& stop) const {
     Block block;
     block.box = block.reach = layout_.box(b);
-    block.seed_point = block.box.lo - kSeedBack * (block.box.hi - block.box.lo);
     // Two particles can touch only if their centres are within 2 r_max; the margin covers the
     // contact tolerance and the rounding of the distance.
     block.halo = 2 * r_max_ * (1 + 1e-6);

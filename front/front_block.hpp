@@ -16,10 +16,10 @@ struct FrontBlock {
   /// grown, where pockets of their faces are filled (their particles' centres stop at their face).
   Aabb<D> reach;
   double halo = 0.0;                   ///< fixed centres lie within this distance of `reach`
-  /// Growth is ordered by the distance to this point (the single front's seed point): outside
-  /// the box, beyond its low corner, so the front is a wide cap sweeping from the low faces, where
-  /// the neighbours grew, to the high ones (front/block_front.hpp).
-  Vec<D> seed_point = Vec<D>::Zero();
+  /// Growth is ordered along this direction (the key of a position x is its dot product with
+  /// x - box.lo): a plane sweeping from the low corner, where the neighbours grew, through the
+  /// block (front/block_front.hpp).
+  Vec<D> growth_direction = Vec<D>::Ones();
   std::vector<Draft> fixed_drafts;     ///< the fixed particles, as drafts ...
   std::vector<Vec<D>> fixed_positions; ///< ... and where they are
 };

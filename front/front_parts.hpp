@@ -137,14 +137,17 @@ Vec<D> direction_with_most_room(const Vec<D>& c, double dist, Room&& room) {
 }
 
 /// Points of spacing ~h (coarsened by 1.26x until there are at most `max_points`) centred in a
-/// box: where a front that ran empty looks for voids. Calls f(flat index, point) for each.
+/// box: where a front that ran empty looks for voids. Calls f(flat index, point) for each. With
+/// `through_centre`, an odd number per axis, so the box's centre is one (a block of a slab one
+/// particle thick has room only on its mid-plane).
 template <int D, class F>
-void for_each_lattice_point(const Aabb<D>& box, double h, double max_points, F&& f) {
+void for_each_lattice_point(const Aabb<D>& box, double h, double max_points, F&& f, bool through_centre = false) {
   std::int64_t dims[D];
   for (;;) {
     double points = 1;
     for (int a = 0; a < D; ++a) {
-      dims[a] = static_cast<std::int64_t>(std::floor(box.size()[a] / h)) + 1;
+      const double n = std::floor(box.size()[a] / h);
+      dims[a] = through_centre ? 2 * static_cast<std::int64_t>(std::floor(n / 2)) + 1 : static_cast<std::int64_t>(n) + 1;
       points *= static_cast<double>(dims[a]);
     }
     if (points <= max_points) break;

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <fstream>
 #include <string>
 
 #include "front/pack.hpp"
@@ -64,6 +66,33 @@ double volume_fraction(const fp::Packing<D>& P, double container_measure) {
   double s = 0;
   for (double r : P.radii) s += fp::ball_measure<D>(r);
   return s / container_measure;
+}
+
+/// Reads an OFF file (triangles only) for the brute-force reference distance.
+inline void read_off(const std::string& path, std::vector<Vec3>& v, std::vector<std::array<int, 3>>& t, double scale = 1) {
+  std::ifstream in(path);
+  std::string magic;
+  std::size_t nv = 0, nf = 0, ne = 0;
+  in >> magic >> nv >> nf >> ne;
+  ASSERT_EQ(magic, "OFF") << path;
+  v.resize(nv);
+  for (auto& p : v) {
+    in >> p.x() >> p.y() >> p.z();
+    p *= scale;
+  }
+  t.resize(nf);
+  for (auto& f : t) {
+    int k = 0;
+    in >> k >> f[0] >> f[1] >> f[2];
+    ASSERT_EQ(k, 3) << path;
+  }
+  ASSERT_TRUE(in) << path;
+}
+
+inline double mesh_volume(const std::vector<Vec3>& v, const std::vector<std::array<int, 3>>& t) {
+  double s = 0;
+  for (const auto& f : t) s += v[f[0]].dot(v[f[1]].cross(v[f[2]]));
+  return std::abs(s) / 6;
 }
 
 }  // namespace fptest

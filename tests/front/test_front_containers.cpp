@@ -95,33 +95,6 @@ particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
 )", cylinder_distance(Vec3(0.1, 0.2, 0.3), Vec3(1, 2, 2), R, h), fp::kPi * R * R * h, k3d);
 }
 
-/// Reads an OFF file (triangles only) for the brute-force reference distance.
-void read_off(const std::string& path, std::vector<Vec3>& v, std::vector<std::array<int, 3>>& t, double scale = 1) {
-  std::ifstream in(path);
-  std::string magic;
-  std::size_t nv = 0, nf = 0, ne = 0;
-  in >> magic >> nv >> nf >> ne;
-  ASSERT_EQ(magic, "OFF") << path;
-  v.resize(nv);
-  for (auto& p : v) {
-    in >> p.x() >> p.y() >> p.z();
-    p *= scale;
-  }
-  t.resize(nf);
-  for (auto& f : t) {
-    int k = 0;
-    in >> k >> f[0] >> f[1] >> f[2];
-    ASSERT_EQ(k, 3) << path;
-  }
-  ASSERT_TRUE(in) << path;
-}
-
-double mesh_volume(const std::vector<Vec3>& v, const std::vector<std::array<int, 3>>& t) {
-  double s = 0;
-  for (const auto& f : t) s += v[f[0]].dot(v[f[1]].cross(v[f[2]]));
-  return std::abs(s) / 6;
-}
-
 TEST(FrontContainers, NonConvexMeshLPrism) {
   std::vector<Vec3> v;
   std::vector<std::array<int, 3>> t;
