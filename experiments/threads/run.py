@@ -107,7 +107,8 @@ def faces(binary, out):
             packer = "packer: {block_edge: %g}\n" % edge if blocks else ""
             scene.write_text("dimension: 3\nseed: %d\ncontainer: {type: box, min: [0, 0, 0], max: [%g, %g, %g]}\n"
                              "particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}\n%s" % (seed, side, side, side, packer))
-            subprocess.run([binary, "pack", str(scene), "-q", "-j", "2", "-o", str(out / "faces.csv"), "--record", str(out / "x.json")], check=True)
+            subprocess.run([binary, "pack", str(scene), "-q", "-j", "2" if blocks else "1", "-o", str(out / "faces.csv"),
+                            "--record", str(out / "x.json")], check=True)
             d = np.genfromtxt(out / "faces.csv", delimiter=",", names=True)
             c, r = np.stack([d["x"], d["y"], d["z"]], 1), d["r"]
             w, area = 0.02, side * side
@@ -129,6 +130,8 @@ def main():
     binary, out = sys.argv[1], pathlib.Path(sys.argv[2]).resolve()
     repeats = int(sys.argv[3]) if len(sys.argv) > 3 else 3
     out.mkdir(parents=True, exist_ok=True)
+    if "--faces-only" in sys.argv:
+        return faces(binary, out)
     rows = speed(binary, out, repeats)
     with open(out / "runs.csv", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))

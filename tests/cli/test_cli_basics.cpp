@@ -32,7 +32,7 @@ TEST(CliBasics, HelpExitsZeroAndListsPack) {
   }
   const RunResult r = run_frontpack(dir, "pack --help");
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  for (const char* option : {"--seed", "--format", "--output", "--record", "--quiet", "--progress"})
+  for (const char* option : {"--seed", "--format", "--output", "--record", "--quiet", "--progress", "--threads"})
     EXPECT_NE(r.out.find(option), std::string::npos) << option << " not in: " << r.out;
 }
 
@@ -118,6 +118,34 @@ TEST(CliBasics, RunRecordIsWritten) {
   const std::string py = "import json,sys; d=json.load(open(sys.argv[1])); "
                          "assert d['seed'] == 1 and d['n'] > 0 and 'particles' not in d, d.keys()";
   EXPECT_EQ(std::system(("/usr/bin/python3 -c " + quoted(py) + " " + quoted((dir.work() / "rec.json").string())).c_str()), 0);
+}
+
+TEST(CliBasics, ThreadsWriteTheSameBytesForEveryCount) {
+  // -j 2 and -j 3 grow the same blocks, and -j 1 too when the scene gives the block edge. Each
+  // run validates its packing (exit 0); the record counts the blocks.
+  TempDir dir;
+  const std::string plain = R"(dimension: 3
+seed: 3
+container: {type: box, min: [0, 0, 0], max: [0.3, 0.3, 0.3]}
+particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
+)";
+  write_bytes(dir.work() / "plain.yaml", plain);
+  write_bytes(dir.work() / "s.yaml", plain + "packer: {block_edge: 0.15}\n");
+  const RunResult a = run_frontpack(dir, "pack s.yaml -j 2 -q -o a.csv --record a.json");
+  const RunResult b = run_frontpack(dir, "pack s.yaml --threads 3 -q -o b.csv");
+  const RunResult c = run_frontpack(dir, "pack s.yaml -j 1 -q -o c.csv");
+  const RunResult d = run_frontpack(dir, "pack plain.yaml -q -o d.csv");
+  for (const RunResult* r : {&a, &b, &c, &d}) ASSERT_EQ(r->exit_code, 0) << r->err;
+  EXPECT_EQ(read_bytes(dir.work() / "a.csv"), read_bytes(dir.work() / "b.csv"));
+  EXPECT_EQ(read_bytes(dir.work() / "a.csv"), read_bytes(dir.work() / "c.csv"));
+  EXPECT_NE(read_bytes(dir.work() / "a.csv"), read_bytes(dir.work() / "d.csv")) << "-j 1 is the single front";
+  EXPECT_NE(read_bytes(dir.work() / "a.json").find("\"blocks\": 8"), std::string::npos);
+  // A negative or absurd thread count is a usage error; nothing is written.
+  for (const char* args : {"pack s.yaml -j -1 -o x.csv", "pack s.yaml -j 99999 -o x.csv", "pack s.yaml -j two -o x.csv"}) {
+    const RunResult r = run_frontpack(dir, args);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir.work() / "x.csv"));
 }
 
 }  // namespace
