@@ -7,9 +7,12 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <string>
+
+#include <memory>
 
 #include "cli/analyze_command.hpp"
 #include "cli/failure_report.hpp"
@@ -17,8 +20,35 @@
 #include "cli/validate_command.hpp"
 #include "core/io/temp_file_registry.hpp"
 #include "frontpack/version.hpp"
+#ifdef FRONTPACK_WITH_MPI
+#include "cli/mpi_exchange.hpp"
+#endif
 
 namespace {
+
+/// 1 without a launcher; under `mpirun -np K` (K > 1) the ranks pack together when this binary
+/// was built with FRONTPACK_MPI, and refuse otherwise (each would write the same outputs).
+int launched_processes() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"})
+    if (const char* v = std::getenv(name)) return std::max(1, std::atoi(v));
+  return 1;
+}
+
+int run_pack(fp::PackCommandOptions& pack, int argc, char** argv) {
+  if (launched_processes() == 1) return fp::run_pack_command(pack);
+#ifdef FRONTPACK_WITH_MPI
+  fp::MpiSession mpi(&argc, &argv);
+  pack.exchange = &mpi.exchange();
+  const int code = fp::run_pack_command(pack);
+  if (code != 0) mpi.abort(code);
+  return code;
+#else
+  (void)argc, (void)argv;
+  std::cerr << "frontpack: error: started by an MPI launcher with " << launched_processes()
+            << " processes, but this frontpack was built without MPI (configure with -DFRONTPACK_MPI=ON; see the README)\n";
+  return 2;
+#endif
+}
 
 int run(int argc, char** argv) {
   CLI::App app{"frontpack: dense packings of spheres and disks by the advancing front"};
@@ -104,7 +134,7 @@ int run(int argc, char** argv) {
       pack.seed = seed;
     }
     pack.progress = pack.force_progress || isatty(fileno(stderr));
-    return fp::run_pack_command(pack);
+    return run_pack(pack, argc, argv);
   }
   return 2;
 }

@@ -23,6 +23,7 @@
 #include "core/io/run_record.hpp"
 #include "core/io/scene_limits.hpp"
 #include "core/io/scene_yaml.hpp"
+#include "front/block_exchange.hpp"
 #include "shapes/io/shape_packing_writers.hpp"
 
 namespace fp {
@@ -71,8 +72,11 @@ void apply_overrides(Scene& scene, const PackCommandOptions& o) {
 template <int D, class Kind>
 int run(const Scene& scene, const PackCommandOptions& o) {
   const Container<D>& container = *scene.container<D>();
-  const typename Kind::Result res =
-      pack_with_progress(o.progress, [&](const ProgressFn& progress) { return Kind::pack(scene, progress); });
+  const bool root = !o.exchange || o.exchange->process() == 0;
+  const typename Kind::Result res = pack_with_progress(o.progress && root, [&](const ProgressFn& progress) {
+    return Kind::pack(scene, progress, o.exchange);
+  });
+  if (!root) return 0;  // rank 0 holds the packing: it checks, writes and summarises
   const auto& P = res.packing;
   const double n = static_cast<double>(P.size());
   const double rate = res.seconds > 0 ? n / res.seconds : 0.0;

@@ -6,6 +6,8 @@
 
 namespace fp {
 
+class BlockExchange;
+
 struct PackCommandOptions {
   std::string scene_path;
   std::string output_path;             ///< -o: replaces the scene's outputs
@@ -16,6 +18,9 @@ struct PackCommandOptions {
   bool quiet = false;
   bool progress = false;               ///< progress line on stderr
   bool force_progress = false;
+  /// Under mpirun (cli/mpi_exchange.hpp): the ranks grow the blocks together; rank 0 checks,
+  /// writes and summarises, the others only pack.
+  BlockExchange* exchange = nullptr;
 };
 
 /// Runs the command; returns the process exit code (0, 1, 2 or 3, see main.cpp).

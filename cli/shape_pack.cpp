@@ -1,11 +1,13 @@
 #include "cli/shape_pack.hpp"
 
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "contact/shape_analysis.hpp"
 #include "contact/shape_validation.hpp"
+#include "front/block_exchange.hpp"
 #include "core/io/output_format.hpp"
 #include "core/io/scene_limits.hpp"
 #include "front/pack_shapes_scene.hpp"
@@ -31,7 +33,10 @@ void check_shape_scene(const Scene& scene) {
 }
 
 template <int D>
-typename ShapePack<D>::Result ShapePack<D>::pack(const Scene& scene, const ProgressFn& progress) {
+typename ShapePack<D>::Result ShapePack<D>::pack(const Scene& scene, const ProgressFn& progress, BlockExchange* exchange) {
+  if (exchange && exchange->processes() > 1)
+    throw std::runtime_error("several MPI processes pack scenes of spheres (disks) only; run this scene without mpirun, with "
+                             "threads (-j N)");
   return pack_shape_scene<D>(scene, progress);
 }
 

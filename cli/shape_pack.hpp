@@ -7,6 +7,8 @@
 
 namespace fp {
 
+class BlockExchange;
+
 /// Resolves every template, checks that every output format can hold these shapes and that the
 /// run fits the machine (core/io/scene_limits.hpp). Throws
 /// SceneError (file, line, key) or std::invalid_argument; nothing has been written.
@@ -15,7 +17,7 @@ void check_shape_scene(const Scene& scene);
 template <int D>
 struct ShapePack {
   using Result = ShapePackResult<D>;
-  static Result pack(const Scene& scene, const ProgressFn& progress);
+  static Result pack(const Scene& scene, const ProgressFn& progress, BlockExchange* exchange);
   static PackCheck check(const Scene& scene, const Result& result, CheckDepth depth);
 };
 

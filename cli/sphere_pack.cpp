@@ -9,8 +9,8 @@
 namespace fp {
 
 template <int D>
-typename SpherePack<D>::Result SpherePack<D>::pack(const Scene& scene, const ProgressFn& progress) {
-  return fp::pack<D>(scene, progress);
+typename SpherePack<D>::Result SpherePack<D>::pack(const Scene& scene, const ProgressFn& progress, BlockExchange* exchange) {
+  return fp::pack<D>(scene, progress, exchange);
 }
 
 template <int D>

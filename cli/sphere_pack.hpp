@@ -7,10 +7,12 @@
 
 namespace fp {
 
+class BlockExchange;
+
 template <int D>
 struct SpherePack {
   using Result = PackResult<D>;
-  static Result pack(const Scene& scene, const ProgressFn& progress);
+  static Result pack(const Scene& scene, const ProgressFn& progress, BlockExchange* exchange);
   static PackCheck check(const Scene& scene, const Result& result, CheckDepth depth);
 };
 

@@ -33,6 +33,7 @@
 #include "core/geometry/container.hpp"
 #include "core/io/scene.hpp"
 #include "front/advancing_front.hpp"
+#include "front/block_exchange.hpp"
 #include "front/block_layout.hpp"
 #include "front/front_block.hpp"
 
@@ -134,6 +135,72 @@ class BlockFront {
     return out;
   }
 
+  /// The same packing grown by several processes (MPI ranks), one thread each: process p grows
+  /// the blocks of its range along x, in the order of their ranks, receiving the particles of
+  /// each earlier neighbour another process grew and sending its own to the processes that grow
+  /// their later neighbours; then process 0 gathers every block and returns the packing (the
+  /// others return an empty one). Spheres only (the data of SphereModel::append_data).
+  Result run_distributed(BlockExchange& exchange) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const int n = layout_.count(), me = exchange.process();
+    results_.assign(static_cast<std::size_t>(n), Result{});
+    std::vector<int> mine;
+    for (int b = 0; b < n; ++b)
+      if (owner(b, exchange) == me) mine.push_back(b);
+    std::sort(mine.begin(), mine.end(), [&](int a, int b) { return layout_.rank(a) < layout_.rank(b); });
+    std::vector<char> have(static_cast<std::size_t>(n), 0);
+    bool timed_out = false;
+    for (const int b : mine) {
+      for (const int nb : layout_.neighbours(b)) {
+        if (layout_.rank(nb) > layout_.rank(b) || owner(nb, exchange) == me || have[static_cast<std::size_t>(nb)]) continue;
+        const std::vector<double> data = exchange.receive(owner(nb, exchange), nb);
+        Model::add_data(results_[static_cast<std::size_t>(nb)], data.data(), data.size());
+        have[static_cast<std::size_t>(nb)] = 1;
+      }
+      StopCriteria s;
+      if (stop_.time_limit_seconds)
+        s.time_limit_seconds = std::max(0.0, *stop_.time_limit_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      Result& r = results_[static_cast<std::size_t>(b)] = grow(b, s);
+      timed_out |= r.stop == StopReason::TimeLimit;
+      std::vector<int> readers;
+      for (const int nb : layout_.neighbours(b))
+        if (layout_.rank(nb) > layout_.rank(b) && owner(nb, exchange) != me) readers.push_back(owner(nb, exchange));
+      std::sort(readers.begin(), readers.end());
+      readers.erase(std::unique(readers.begin(), readers.end()), readers.end());
+      if (readers.empty()) continue;
+      std::vector<double> data;
+      Model::append_data(r, data);
+      for (const int to : readers) exchange.send(to, b, data);
+    }
+    // Process 0 gathers the blocks with their counters: [timed out, grid bytes, counters..., particles...].
+    constexpr std::size_t kHead = 2 + std::size(FrontCounters::kFields);
+    std::vector<std::pair<int, std::vector<double>>> own;
+    for (const int b : mine) {
+      const Result& r = results_[static_cast<std::size_t>(b)];
+      std::vector<double> data{r.stop == StopReason::TimeLimit ? 1.0 : 0.0, static_cast<double>(r.grid_bytes)};
+      for (const auto field : FrontCounters::kFields) data.push_back(static_cast<double>(r.counters.*field));
+      Model::append_data(r, data);
+      own.emplace_back(b, std::move(data));
+    }
+    std::vector<std::vector<double>> all = exchange.gather(own, n);
+    if (me != 0) return Result{};
+    for (int b = 0; b < n; ++b) {
+      const std::vector<double>& data = all[static_cast<std::size_t>(b)];
+      Result r;
+      if (data.size() >= kHead) {
+        timed_out |= data[0] != 0.0;
+        r.grid_bytes = static_cast<std::size_t>(data[1]);
+        std::size_t k = 2;
+        for (const auto field : FrontCounters::kFields) r.counters.*field = static_cast<std::uint64_t>(data[k++]);
+        Model::add_data(r, data.data() + kHead, data.size() - kHead);
+      }
+      results_[static_cast<std::size_t>(b)] = std::move(r);
+    }
+    Result out = merge(timed_out);
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+  }
+
  private:
   /// How far a block's centres reach into the face neighbours that grew before it, in r_max.
   /// Two blocks growing at once are a block edge e apart and may both reach into the block
@@ -163,6 +230,12 @@ class BlockFront {
     }
     AdvancingFront<D, Model> front(container_, input_, opt_, stop, block_seed(b), &block);
     return front.run();
+  }
+
+  /// The process that grows block b: the blocks are shared in ranges along x (the axis of
+  /// lowest weight in the rank: each process's part of a row waits only for the part before it).
+  int owner(int b, const BlockExchange& exchange) const {
+    return static_cast<int>(static_cast<std::int64_t>(layout_.coords(b)[0]) * exchange.processes() / layout_.blocks_on_axis(0));
   }
 
   /// A block's random stream: the scene's seed and the block's index, spread by splitmix64 (Rng).

@@ -5,8 +5,12 @@
 
 namespace fp {
 
+class BlockExchange;
+
 /// Packs the scene's container with its size distribution (dimension D must match the scene).
+/// With an `exchange` of several processes (MPI ranks), they grow its blocks together
+/// (front/block_front.hpp); process 0 returns the packing, the others an empty one.
 template <int D>
-PackResult<D> pack(const Scene& scene, const ProgressFn& progress = {});
+PackResult<D> pack(const Scene& scene, const ProgressFn& progress = {}, BlockExchange* exchange = nullptr);
 
 }  // namespace fp

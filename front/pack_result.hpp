@@ -34,28 +34,21 @@ struct FrontCounters {
   std::uint64_t blocks = 0;               ///< threads: blocks the container was cut into (0: one front)
   std::uint64_t trimmed = 0;              ///< threads: particles placed, then dropped to honour a count or fraction stop
 
-  /// The counters of two fronts run side by side (the blocks of front/block_front.hpp).
+  /// Every counter, in declaration order (adding, sending and listing them all alike).
+  static constexpr std::uint64_t FrontCounters::*kFields[] = {
+      &FrontCounters::front_picks, &FrontCounters::front_removals, &FrontCounters::pairs_considered,
+      &FrontCounters::pairs_pruned, &FrontCounters::solves, &FrontCounters::candidates,
+      &FrontCounters::rejected_container, &FrontCounters::rejected_overlap, &FrontCounters::rejected_off_face,
+      &FrontCounters::rejected_block, &FrontCounters::wall_bodies, &FrontCounters::radii_drawn,
+      &FrontCounters::radii_unplaced, &FrontCounters::max_neighbours, &FrontCounters::voids_reopened,
+      &FrontCounters::voids_seeded, &FrontCounters::two_contact_placements, &FrontCounters::contact_bodies_capped,
+      &FrontCounters::blocks, &FrontCounters::trimmed};
+
+  /// The counters of two fronts run side by side (the blocks of front/block_front.hpp); the
+  /// largest |V| is the larger one.
   FrontCounters& operator+=(const FrontCounters& o) {
-    front_picks += o.front_picks;
-    front_removals += o.front_removals;
-    pairs_considered += o.pairs_considered;
-    pairs_pruned += o.pairs_pruned;
-    solves += o.solves;
-    candidates += o.candidates;
-    rejected_container += o.rejected_container;
-    rejected_overlap += o.rejected_overlap;
-    rejected_off_face += o.rejected_off_face;
-    rejected_block += o.rejected_block;
-    wall_bodies += o.wall_bodies;
-    radii_drawn += o.radii_drawn;
-    radii_unplaced += o.radii_unplaced;
-    max_neighbours = std::max(max_neighbours, o.max_neighbours);
-    voids_reopened += o.voids_reopened;
-    voids_seeded += o.voids_seeded;
-    two_contact_placements += o.two_contact_placements;
-    contact_bodies_capped += o.contact_bodies_capped;
-    blocks += o.blocks;
-    trimmed += o.trimmed;
+    for (const auto field : kFields) this->*field += o.*field;
+    max_neighbours = std::max(max_neighbours - o.max_neighbours, o.max_neighbours);
     return *this;
   }
 };

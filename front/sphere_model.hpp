@@ -73,6 +73,23 @@ class SphereModel {
     to.packing.add(from.packing.centers[i], from.packing.radii[i]);
     to.solid_measure += measure_of(from, i);
   }
+  /// The particles as doubles, to send to another process (front/block_exchange.hpp): per
+  /// particle its centre's D coordinates and its radius.
+  static void append_data(const Result& res, std::vector<double>& out) {
+    for (std::size_t i = 0; i < res.packing.size(); ++i) {
+      for (int a = 0; a < D; ++a) out.push_back(res.packing.centers[i][a]);
+      out.push_back(res.packing.radii[i]);
+    }
+  }
+  /// Adds the particles of append_data()'s doubles.
+  static void add_data(Result& res, const double* data, std::size_t doubles) {
+    for (std::size_t k = 0; k + D < doubles; k += D + 1) {
+      Vec<D> c;
+      for (int a = 0; a < D; ++a) c[a] = data[k + a];
+      res.packing.add(c, data[k + D]);
+      res.solid_measure += ball_measure<D>(data[k + D]);
+    }
+  }
   /// Keeps the particles i with keep(i), in order.
   template <class Keep>
   static void keep_only(Result& res, Keep&& keep) {
