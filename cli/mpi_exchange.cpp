@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <deque>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -39,14 +40,18 @@ class MpiExchange final : public BlockExchange {
           "MPI_Isend");
   }
 
-  std::vector<double> receive(int from, int block) override {
+  std::optional<std::pair<int, std::vector<double>>> receive(bool wait) override {
     MPI_Status status;
-    check(MPI_Probe(from, tag(block), MPI_COMM_WORLD, &status), "MPI_Probe");
+    int arrived = 1;
+    if (wait) check(MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &status), "MPI_Probe");
+    else check(MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &arrived, &status), "MPI_Iprobe");
+    if (!arrived) return std::nullopt;
     int count = 0;
     check(MPI_Get_count(&status, MPI_DOUBLE, &count), "MPI_Get_count");
     std::vector<double> data(static_cast<std::size_t>(count));
-    check(MPI_Recv(data.data(), count, MPI_DOUBLE, from, tag(block), MPI_COMM_WORLD, MPI_STATUS_IGNORE), "MPI_Recv");
-    return data;
+    check(MPI_Recv(data.data(), count, MPI_DOUBLE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+          "MPI_Recv");
+    return std::make_pair(status.MPI_TAG, std::move(data));
   }
 
   std::vector<std::vector<double>> gather(const std::vector<std::pair<int, std::vector<double>>>& mine, int blocks) override {
@@ -79,13 +84,6 @@ class MpiExchange final : public BlockExchange {
       out[b].assign(all.begin() + static_cast<std::ptrdiff_t>(k + 2), all.begin() + static_cast<std::ptrdiff_t>(k + 2 + n));
       k += 2 + n;
     }
-    return out;
-  }
-
-  std::vector<double> sum(const std::vector<double>& values) override {
-    std::vector<double> out(values.size());
-    check(MPI_Allreduce(values.data(), out.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD),
-          "MPI_Allreduce");
     return out;
   }
 

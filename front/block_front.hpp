@@ -136,10 +136,11 @@ class BlockFront {
   }
 
   /// The same packing grown by several processes (MPI ranks), one thread each: process p grows
-  /// the blocks of its range along x, in the order of their ranks, receiving the particles of
-  /// each earlier neighbour another process grew and sending its own to the processes that grow
-  /// their later neighbours; then process 0 gathers every block and returns the packing (the
-  /// others return an empty one). Spheres only (the data of SphereModel::append_data).
+  /// its blocks (owner()), each once its earlier neighbours are there (the lowest
+  /// rank first), receiving the particles of those another process grew and sending its own to
+  /// the processes that grow its later neighbours; then process 0 gathers every block and
+  /// returns the packing (the others return an empty one). Spheres only (the data of
+  /// SphereModel::append_data).
   Result run_distributed(BlockExchange& exchange) {
     const auto t0 = std::chrono::steady_clock::now();
     const int n = layout_.count(), me = exchange.process();
@@ -148,19 +149,31 @@ class BlockFront {
     for (int b = 0; b < n; ++b)
       if (owner(b, exchange) == me) mine.push_back(b);
     std::sort(mine.begin(), mine.end(), [&](int a, int b) { return layout_.rank(a) < layout_.rank(b); });
-    std::vector<char> have(static_cast<std::size_t>(n), 0);
+    std::vector<char> here(static_cast<std::size_t>(n), 0);  // grown here, or received
+    auto store = [&](std::pair<int, std::vector<double>>&& m) {
+      Model::add_data(results_[static_cast<std::size_t>(m.first)], m.second.data(), m.second.size());
+      here[static_cast<std::size_t>(m.first)] = 1;
+    };
+    auto ready = [&](int b) {
+      for (const int nb : layout_.neighbours(b))
+        if (layout_.rank(nb) < layout_.rank(b) && !here[static_cast<std::size_t>(nb)]) return false;
+      return true;
+    };
     bool timed_out = false;
-    for (const int b : mine) {
-      for (const int nb : layout_.neighbours(b)) {
-        if (layout_.rank(nb) > layout_.rank(b) || owner(nb, exchange) == me || have[static_cast<std::size_t>(nb)]) continue;
-        const std::vector<double> data = exchange.receive(owner(nb, exchange), nb);
-        Model::add_data(results_[static_cast<std::size_t>(nb)], data.data(), data.size());
-        have[static_cast<std::size_t>(nb)] = 1;
+    for (std::size_t left = mine.size(); left > 0;) {
+      while (auto m = exchange.receive(false)) store(std::move(*m));
+      const auto next = std::find_if(mine.begin(), mine.end(), [&](int b) { return !here[static_cast<std::size_t>(b)] && ready(b); });
+      if (next == mine.end()) {
+        store(std::move(*exchange.receive(true)));
+        continue;
       }
+      const int b = *next;
       StopCriteria s;
       if (stop_.time_limit_seconds)
         s.time_limit_seconds = std::max(0.0, *stop_.time_limit_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       Result& r = results_[static_cast<std::size_t>(b)] = grow(b, s);
+      here[static_cast<std::size_t>(b)] = 1;
+      --left;
       timed_out |= r.stop == StopReason::TimeLimit;
       std::vector<int> readers;
       for (const int nb : layout_.neighbours(b))
@@ -232,11 +245,11 @@ class BlockFront {
     return front.run();
   }
 
-  /// The process that grows block b: the blocks are shared in ranges along x (the axis of
-  /// lowest weight in the rank: each process's part of a row waits only for the part before it).
-  int owner(int b, const BlockExchange& exchange) const {
-    return static_cast<int>(static_cast<std::int64_t>(layout_.coords(b)[0]) * exchange.processes() / layout_.blocks_on_axis(0));
-  }
+  /// The process that grows block b: blocks dealt out in turn along x (i mod K), so every
+  /// process has blocks ready all along the order of growth (ranges along x made each process's
+  /// part of a row wait for the part before it: million on 2 ranks packed in 23.2 s, dealt out in
+  /// 19.7 s, as 2 threads).
+  int owner(int b, const BlockExchange& exchange) const { return layout_.coords(b)[0] % exchange.processes(); }
 
   /// A block's random stream: the scene's seed and the block's index, spread by splitmix64 (Rng).
   std::uint64_t block_seed(int b) const { return seed_ + 0x9E3779B97F4A7C15ULL * (static_cast<std::uint64_t>(b) + 1); }
