@@ -1,8 +1,8 @@
 #pragma once
 // One block of a container decomposed for parallel growth (front/block_front.hpp): the front
-// places centres inside `box` only. The `fixed` particles, placed around the box before by the
-// blocks of earlier phases, are obstacles, contact bodies and the front the block grows from;
-// they are not part of the block's result.
+// places centres inside `reach` only. The fixed particles, placed around it before by the blocks
+// that grew earlier, are obstacles, contact bodies and the front the block grows from; they are
+// not part of the block's result.
 #include <vector>
 
 #include "core/geometry/vec.hpp"
