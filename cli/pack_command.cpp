@@ -111,6 +111,7 @@ int run(const Scene& scene, const PackCommandOptions& o) {
   rec.counters.insert(rec.counters.end(), check.counters.begin(), check.counters.end());
   rec.info = {{"stop_reason", to_string(res.stop)}, {"validation", v.ok ? "ok" : "FAILED"}};
   rec.info.insert(rec.info.end(), check.info.begin(), check.info.end());
+  for (std::size_t r = 0; r < res.ranks.size(); ++r) rec.info.emplace_back("rank_" + std::to_string(r), rank_work_text(res.ranks[r]));
   rec.analysis_json = check.analysis_json;
 
   const double write_seconds = write_outputs(scene, o.record_path, rec, [&](OutputFormat format, const std::string& path) {
@@ -121,6 +122,8 @@ int run(const Scene& scene, const PackCommandOptions& o) {
     print_run_header<D>(scene, container);
     std::printf("  particles      %s\n", rec.distribution_description.c_str());
     std::printf("  placed         %zu   (stop: %s)\n", P.size(), to_string(res.stop));
+    for (std::size_t r = 0; r < res.ranks.size(); ++r)
+      std::printf("  rank %-9zu %s\n", r, rank_work_text(res.ranks[r]).c_str());
     std::printf("%s", check.summary_lines.c_str());
     std::printf("  validation     %s\n", v.one_line().c_str());
     std::printf("  time           pack %.3f s (%.1f particles/s), %s %.3f s, write %.3f s\n", res.seconds, rate,

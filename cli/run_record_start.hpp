@@ -53,6 +53,17 @@ inline std::vector<std::pair<std::string, std::uint64_t>> front_counter_entries(
           {"blocks", c.blocks},                   {"trimmed", c.trimmed}};
 }
 
+/// One MPI rank's work in a line (run record `info` and summary): what it grew, against how
+/// many particles of other blocks, what it sent, how long it grew and waited.
+inline std::string rank_work_text(const RankWork& w) {
+  char line[200];
+  std::snprintf(line, sizeof line, "%llu blocks, %llu particles, %llu fixed, sent %.1f MB, grew %.2f s, waited %.2f s",
+                static_cast<unsigned long long>(w.blocks), static_cast<unsigned long long>(w.particles),
+                static_cast<unsigned long long>(w.fixed), static_cast<double>(w.doubles_sent) * 8 / 1e6, w.grow_seconds,
+                w.wait_seconds);
+  return line;
+}
+
 /// What the record and the summaries call the particles: the radius law, or each template's
 /// family and size law.
 inline std::string particles_description(const Scene& scene) {

@@ -160,18 +160,29 @@ class BlockFront {
       return true;
     };
     bool timed_out = false;
+    RankWork work;
+    auto since = [](std::chrono::steady_clock::time_point t) {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    };
     for (std::size_t left = mine.size(); left > 0;) {
       while (auto m = exchange.receive(false)) store(std::move(*m));
       const auto next = std::find_if(mine.begin(), mine.end(), [&](int b) { return !here[static_cast<std::size_t>(b)] && ready(b); });
       if (next == mine.end()) {
+        const auto t = std::chrono::steady_clock::now();
         store(std::move(*exchange.receive(true)));
+        work.wait_seconds += since(t);
         continue;
       }
       const int b = *next;
       StopCriteria s;
-      if (stop_.time_limit_seconds)
-        s.time_limit_seconds = std::max(0.0, *stop_.time_limit_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-      Result& r = results_[static_cast<std::size_t>(b)] = grow(b, s);
+      if (stop_.time_limit_seconds) s.time_limit_seconds = std::max(0.0, *stop_.time_limit_seconds - since(t0));
+      const auto t = std::chrono::steady_clock::now();
+      std::size_t fixed = 0;
+      Result& r = results_[static_cast<std::size_t>(b)] = grow(b, s, &fixed);
+      work.grow_seconds += since(t);
+      ++work.blocks;
+      work.particles += Model::size(r);
+      work.fixed += fixed;
       here[static_cast<std::size_t>(b)] = 1;
       --left;
       timed_out |= r.stop == StopReason::TimeLimit;
@@ -183,11 +194,16 @@ class BlockFront {
       if (readers.empty()) continue;
       std::vector<double> data;
       Model::append_data(r, data);
+      work.doubles_sent += data.size() * readers.size();
       for (const int to : readers) exchange.send(to, b, data);
     }
-    // Process 0 gathers the blocks with their counters: [timed out, grid bytes, counters..., particles...].
+    // Process 0 gathers the blocks with their counters, [timed out, grid bytes, counters...,
+    // particles...], and each process's work as a block of its own (index n + process).
     constexpr std::size_t kHead = 2 + std::size(FrontCounters::kFields);
     std::vector<std::pair<int, std::vector<double>>> own;
+    own.emplace_back(n + me, std::vector<double>{static_cast<double>(work.blocks), static_cast<double>(work.particles),
+                                                 static_cast<double>(work.fixed), static_cast<double>(work.doubles_sent),
+                                                 work.grow_seconds, work.wait_seconds});
     for (const int b : mine) {
       const Result& r = results_[static_cast<std::size_t>(b)];
       std::vector<double> data{r.stop == StopReason::TimeLimit ? 1.0 : 0.0, static_cast<double>(r.grid_bytes)};
@@ -195,7 +211,7 @@ class BlockFront {
       Model::append_data(r, data);
       own.emplace_back(b, std::move(data));
     }
-    std::vector<std::vector<double>> all = exchange.gather(own, n);
+    std::vector<std::vector<double>> all = exchange.gather(own, n + exchange.processes());
     if (me != 0) return Result{};
     for (int b = 0; b < n; ++b) {
       const std::vector<double>& data = all[static_cast<std::size_t>(b)];
@@ -210,7 +226,13 @@ class BlockFront {
       results_[static_cast<std::size_t>(b)] = std::move(r);
     }
     Result out = merge(timed_out);
-    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    for (int p = 0; p < exchange.processes(); ++p) {
+      const std::vector<double>& w = all[static_cast<std::size_t>(n + p)];
+      if (w.size() == 6)
+        out.ranks.push_back({static_cast<std::uint64_t>(w[0]), static_cast<std::uint64_t>(w[1]), static_cast<std::uint64_t>(w[2]),
+                             static_cast<std::uint64_t>(w[3]), w[4], w[5]});
+    }
+    out.seconds = since(t0);
     return out;
   }
 
@@ -220,8 +242,9 @@ class BlockFront {
   /// between them: their new particles stay e - 2 kReach r_max > 2 r_max apart.
   static constexpr double kReach = 2.0;
   static_assert(BlockLayout<D>::kMinEdge > 2 * kReach + 2);
-  /// Grows block b against the particles its earlier neighbours placed near its box.
-  Result grow(int b, const StopCriteria& stop) const {
+  /// Grows block b against the particles its earlier neighbours placed near its box (their
+  /// number in *fixed, if given).
+  Result grow(int b, const StopCriteria& stop, std::size_t* fixed = nullptr) const {
     Block block;
     block.box = block.reach = layout_.box(b);
     // Two particles can touch only if their centres are within 2 r_max; the margin covers the
@@ -241,15 +264,16 @@ class BlockFront {
         block.fixed_positions.push_back(x);
       }
     }
+    if (fixed) *fixed = block.fixed_positions.size();
     AdvancingFront<D, Model> front(container_, input_, opt_, stop, block_seed(b), &block);
     return front.run();
   }
 
-  /// The process that grows block b: blocks dealt out in turn along x (i mod K), so every
-  /// process has blocks ready all along the order of growth (ranges along x made each process's
-  /// part of a row wait for the part before it: million on 2 ranks packed in 23.2 s, dealt out in
-  /// 19.7 s, as 2 threads).
-  int owner(int b, const BlockExchange& exchange) const { return layout_.coords(b)[0] % exchange.processes(); }
+  /// The process that grows block b: blocks dealt out in turn in index order (along x, then y,
+  /// then z), so every process has blocks ready all along the order of growth (ranges along x
+  /// made each process's part of a row wait for the part before it: million on 2 ranks packed in
+  /// 23.2 s, dealt out in 19.7 s, as 2 threads; experiments/scale simulates up to 1,000 ranks).
+  int owner(int b, const BlockExchange& exchange) const { return b % exchange.processes(); }
 
   /// A block's random stream: the scene's seed and the block's index, spread by splitmix64 (Rng).
   std::uint64_t block_seed(int b) const { return seed_ + 0x9E3779B97F4A7C15ULL * (static_cast<std::uint64_t>(b) + 1); }

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "core/geometry/packing.hpp"
 
@@ -74,6 +75,17 @@ struct SolverCounters {
   }
 };
 
+/// The work of one MPI rank of a packing grown by several (front/block_front.hpp): what the plan
+/// for many ranks is measured from (experiments/scale).
+struct RankWork {
+  std::uint64_t blocks = 0;          ///< blocks it grew
+  std::uint64_t particles = 0;       ///< particles they hold (before a stop's trimming)
+  std::uint64_t fixed = 0;           ///< particles of earlier neighbours its blocks grew against
+  std::uint64_t doubles_sent = 0;    ///< block data sent to other ranks (8 bytes each)
+  double grow_seconds = 0.0;         ///< growing its blocks
+  double wait_seconds = 0.0;         ///< waiting for other ranks' blocks
+};
+
 /// What one run of the front returns, for spheres (`Particles` = Packing<D>, SoA) and for
 /// shapes (ShapePacking<D>, front/shape_front.hpp) alike.
 template <int D, class Particles = Packing<D>>
@@ -87,6 +99,7 @@ struct PackResult {
   double contact_tolerance = 0.0;   ///< contact / overlap allowance, relative to the smaller (circumscribed) radius
   std::size_t grid_bytes = 0;
   int grid_levels = 0;
+  std::vector<RankWork> ranks;      ///< per MPI rank, when several grew it (empty otherwise)
 };
 
 /// Progress report for long runs: particles so far, elapsed seconds, volume fraction so far.
