@@ -56,7 +56,7 @@ class AdvancingFront {
   using Block = FrontBlock<D, Draft>;
 
   /// The whole container; or, with `block`, one block of it (front/block_front.hpp): centres in
-  /// block->reach only, grown from its fixed particles (or from a void if it has none), growth
+  /// block->box only, grown from its fixed particles (or from a void if it has none), growth
   /// ordered along block->growth_direction.
   AdvancingFront(const Container<D>& container, const typename Model::Input& input, const PackerOptions& options,
                  const StopCriteria& stop, std::uint64_t seed, const Block* block = nullptr)
@@ -170,8 +170,8 @@ class AdvancingFront {
   static Aabb<D> centres_domain(const Container<D>& container, const Block* block) {
     Aabb<D> b = container.bounds();
     if (!block) return b;
-    b.lo = b.lo.cwiseMax((block->reach.lo.array() - block->halo).matrix());
-    b.hi = b.hi.cwiseMin((block->reach.hi.array() + block->halo).matrix());
+    b.lo = b.lo.cwiseMax((block->box.lo.array() - block->halo).matrix());
+    b.hi = b.hi.cwiseMin((block->box.hi.array() + block->halo).matrix());
     return b;
   }
   /// The fixed particles get the first ids, all in F (dropped from the result by run()).
@@ -192,7 +192,7 @@ class AdvancingFront {
     const double d = std::max(0.0, (c - seed_point_).norm() - reach);
     return d * d;
   }
-  bool in_block(const Vec<D>& x) const { return !block_ || block_->reach.contains(x); }
+  bool in_block(const Vec<D>& x) const { return !block_ || block_->box.contains(x); }
   bool fits(const Draft& d, const Vec<D>& x) const { return in_block(x) && model_.fits(d, x); }
   bool fits_strictly(const Draft& d, const Vec<D>& x) const { return in_block(x) && model_.fits_strictly(d, x); }
 
@@ -206,7 +206,7 @@ class AdvancingFront {
   /// empty. Returns false when there is no void: the normal end, at the cost of one lattice sweep.
   bool resume_at_voids(Result& res) {
     const std::size_t largest = largest_in_pool();
-    const Aabb<D> box = block_ ? block_->reach : container_.bounds();
+    const Aabb<D> box = block_ ? block_->box : container_.bounds();
     bool reopened = false, found = false;
     Vec<D> best;
     std::size_t best_k = largest;

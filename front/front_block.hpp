@@ -1,6 +1,6 @@
 #pragma once
 // One block of a container decomposed for parallel growth (front/block_front.hpp): the front
-// places centres inside `reach` only. The fixed particles, placed around it before by the blocks
+// places centres inside `box` only. The fixed particles, placed around it before by the blocks
 // that grew earlier, are obstacles, contact bodies and the front the block grows from; they are
 // not part of the block's result.
 #include <vector>
@@ -11,11 +11,8 @@ namespace fp {
 
 template <int D, class Draft>
 struct FrontBlock {
-  Aabb<D> box;                         ///< the block
-  /// Where its new centres may lie (closed): the box, reaching into the neighbours that have
-  /// grown, where pockets of their faces are filled (their particles' centres stop at their face).
-  Aabb<D> reach;
-  double halo = 0.0;                   ///< fixed centres lie within this distance of `reach`
+  Aabb<D> box;                         ///< where its new centres lie (closed)
+  double halo = 0.0;                   ///< fixed centres lie within this distance of the box
   /// Growth is ordered along this direction (the key of a position x is its dot product with
   /// x - box.lo): a plane sweeping from the low corner, where the neighbours grew, through the
   /// block (front/block_front.hpp).

@@ -43,9 +43,9 @@ struct MinimisationOptions {
 enum class ContactSolverChoice { Auto, Minimisation };
 
 /// The smallest block edge of a packing grown in blocks, in largest particle sizes: two blocks
-/// growing at once are a block apart and reach 2 r_max towards each other
-/// (front/block_front.hpp), which leaves more than the 2 r_max within which particles touch.
-inline constexpr double kMinBlockEdge = 7.0;
+/// growing at once are a block apart (front/block_front.hpp), beyond the 2 r_max within which
+/// particles touch, with room for a bulk.
+inline constexpr double kMinBlockEdge = 4.0;
 
 struct PackerOptions {
   std::string method = "front";              ///< the advancing front (the only method of this issue)

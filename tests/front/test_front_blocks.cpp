@@ -71,7 +71,7 @@ TEST(BlockLayout, TilesTheDomainAndOrdersEveryPairOfNeighbours) {
     EXPECT_EQ(L.box(L.count() - 1).hi, dom.hi);  // the last block ends at the domain's end exactly
     EXPECT_EQ(L.box(0).lo, dom.lo);
   }
-  EXPECT_THROW(BlockLayout<3>(dom, r_max, 6.9 * r_max), std::invalid_argument);
+  EXPECT_THROW(BlockLayout<3>(dom, r_max, 3.9 * r_max), std::invalid_argument);
   // A domain thinner than a block on an axis has one block there.
   Aabb<2> thin;
   thin.lo = fp::Vec2(0, 0);
@@ -300,9 +300,9 @@ TEST(BlockFront, SceneKeysAreChecked) {
 dimension: 3
 container: {type: box, min: [0, 0, 0], max: [1, 1, 1]}
 particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
-packer: {block_edge: 0.1}
+packer: {block_edge: 0.07}
 )");
-    ADD_FAILURE() << "a block edge below 7 r_max was accepted";
+    ADD_FAILURE() << "a block edge below 4 r_max was accepted";
   } catch (const fp::SceneError& e) {
     const std::string m = e.what();
     EXPECT_NE(m.find("block_edge"), std::string::npos) << m;
