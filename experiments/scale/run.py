@@ -105,7 +105,6 @@ def simulate(n, workers):
     for t in range(len(blocks)):
         if waiting[t] == 0:
             heapq.heappush(ready[t % workers], (rank_of(*blocks[t]), t))
-    busy_until = [0] * workers
     events = []  # (finish time, worker, block)
     time, done = 0, 0
     idle = set(range(workers))
@@ -115,18 +114,12 @@ def simulate(n, workers):
                 _, t = heapq.heappop(ready[w])
                 heapq.heappush(events, (time + 1, w, t))
                 idle.discard(w)
-        time, w, t = heapq.heappop(events)
-        done += 1
-        idle.add(w)
-        for m in later[t]:
-            waiting[m] -= 1
-            if waiting[m] == 0:
-                heapq.heappush(ready[m % workers], (rank_of(*blocks[m]), m))
-        while events and events[0][0] == time:
-            _, w2, t2 = heapq.heappop(events)
+        time = events[0][0]
+        while events and events[0][0] == time:  # every block finishing now frees its worker
+            _, w, t = heapq.heappop(events)
             done += 1
-            idle.add(w2)
-            for m in later[t2]:
+            idle.add(w)
+            for m in later[t]:
                 waiting[m] -= 1
                 if waiting[m] == 0:
                     heapq.heappush(ready[m % workers], (rank_of(*blocks[m]), m))
