@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cstdint>
@@ -11,8 +12,6 @@
 #include <filesystem>
 #include <iostream>
 #include <string>
-
-#include <memory>
 
 #include "cli/analyze_command.hpp"
 #include "cli/failure_report.hpp"
