@@ -145,7 +145,7 @@ double slab_fraction(const fp::Packing<3>& P, int axis, double lo, double hi, do
 TEST(BlockFront, FacesAreAsDenseAsTheBlocksInside) {
   // Blocks of 0.2 (10 r_max): faces at 0.2 and 0.4 on each axis. Slabs of r_max centred on a face
   // against the slabs inside the blocks, 2 r_max or more from a face and a wall. Measured: faces
-  // 0.586 against 0.599 inside; the single front: 0.600 and 0.595 (experiments/threads/RESULTS.md).
+  // 0.583 against 0.599 inside; the single front: 0.600 and 0.595 (experiments/threads/RESULTS.md).
   const char* yaml = R"(
 dimension: 3
 seed: 21
