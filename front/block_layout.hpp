@@ -42,10 +42,14 @@ class BlockLayout {
       throw std::invalid_argument("block edge " + std::to_string(edge) + " is below " + std::to_string(kMinEdge) +
                                   " r_max = " + std::to_string(kMinEdge * r_max));
     }
+    double count = 1;
+    for (int a = 0; a < D; ++a) count *= blocks_along(size[a], r_max, edge);
+    if (!(count <= kMaxBlocks))
+      throw std::invalid_argument("block edge " + std::to_string(edge) + " cuts the container into " + std::to_string(count) +
+                                  " blocks, more than " + std::to_string(kMaxBlocks));
     count_ = 1;
     for (int a = 0; a < D; ++a) {
-      const double fit = std::floor(size[a] / (kMinEdge * r_max));  // most blocks of the smallest edge
-      n_[a] = static_cast<int>(std::clamp(std::round(size[a] / edge), 1.0, std::max(1.0, std::min(fit, 1e4))));
+      n_[a] = static_cast<int>(blocks_along(size[a], r_max, edge));
       count_ *= n_[a];
     }
   }

@@ -904,6 +904,15 @@ void parse_body(const Map& root, Scene& scene, const Context& ctx) {
        << ": two blocks growing at once must be out of each other's reach";
     root.find("packer")->map().find("block_edge")->fail(os.str());
   }
+  if (scene.packer.block_edge) {
+    double blocks = 1;
+    for (int a = 0; a < D; ++a) blocks *= blocks_along(container->bounds().size()[a], r_max, *scene.packer.block_edge);
+    if (blocks > kMaxBlocks) {
+      std::ostringstream os;
+      os << "cuts the container into " << blocks << " blocks, more than the " << kMaxBlocks << " a packing may have; use a larger edge";
+      root.find("packer")->map().find("block_edge")->fail(os.str());
+    }
+  }
   if (container->bounds().size().maxCoeff() > kFarFrameExtent * r_min) {
     Vec<D> seed = container->interior_point() + container->origin();
     if (scene.packer.seed_point)

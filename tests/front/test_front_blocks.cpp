@@ -72,6 +72,12 @@ TEST(BlockLayout, TilesTheDomainAndOrdersEveryPairOfNeighbours) {
     EXPECT_EQ(L.box(0).lo, dom.lo);
   }
   EXPECT_THROW(BlockLayout<3>(dom, r_max, 3.9 * r_max), std::invalid_argument);
+  // More than kMaxBlocks blocks is refused, not an overflowing count.
+  Aabb<3> huge;
+  huge.lo = Vec3::Zero();
+  huge.hi = Vec3::Constant(1000);
+  EXPECT_THROW(BlockLayout<3>(huge, r_max, 4 * r_max), std::invalid_argument);
+  EXPECT_EQ(BlockLayout<3>(huge, r_max, 0).count(), 512);  // the automatic edge
   // A domain thinner than a block on an axis has one block there.
   Aabb<2> thin;
   thin.lo = fp::Vec2(0, 0);
@@ -307,6 +313,19 @@ packer: {block_edge: 0.07}
     const std::string m = e.what();
     EXPECT_NE(m.find("block_edge"), std::string::npos) << m;
     EXPECT_NE(m.find(":5:"), std::string::npos) << m;  // the line of the key
+  }
+  try {
+    scene_from_yaml(R"(
+dimension: 3
+container: {type: box, min: [0, 0, 0], max: [100, 100, 100]}
+particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
+packer: {block_edge: 0.08}
+)");
+    ADD_FAILURE() << "a block edge giving 2 x 10^9 blocks was accepted";
+  } catch (const fp::SceneError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("more than"), std::string::npos) << m;
+    EXPECT_NE(m.find(":5:"), std::string::npos) << m;
   }
 }
 
