@@ -26,6 +26,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <queue>
 #include <thread>
@@ -66,19 +67,7 @@ class BlockFront {
     const int n = layout_.count();
     results_.assign(static_cast<std::size_t>(n), Result{});
 
-    // Each block waits for its neighbours of lower rank; ready blocks are taken lowest rank first.
-    std::vector<int> waiting(static_cast<std::size_t>(n), 0);
-    std::vector<std::vector<int>> later(static_cast<std::size_t>(n));
-    using Ready = std::pair<int, int>;  // (rank, block)
-    std::priority_queue<Ready, std::vector<Ready>, std::greater<Ready>> ready;
-    for (int b = 0; b < n; ++b) {
-      for (const int nb : layout_.neighbours(b)) {
-        if (layout_.rank(nb) < layout_.rank(b)) ++waiting[static_cast<std::size_t>(b)];
-        else later[static_cast<std::size_t>(b)].push_back(nb);
-      }
-      if (waiting[static_cast<std::size_t>(b)] == 0) ready.push({layout_.rank(b), b});
-    }
-
+    Order order(layout_, [](int) { return true; });
     std::mutex m;
     std::condition_variable changed;
     int done = 0;
@@ -90,18 +79,14 @@ class BlockFront {
     auto work = [&] {
       std::unique_lock<std::mutex> lock(m);
       for (;;) {
-        changed.wait(lock, [&] { return !ready.empty() || done == n || error; });
+        changed.wait(lock, [&] { return order.has_ready() || done == n || error; });
         if (done == n || error) return;
-        const int b = ready.top().second;
-        ready.pop();
+        const int b = order.next();
         lock.unlock();
         Result r;
         std::exception_ptr failed;
         try {
-          StopCriteria s;  // counts and fractions are honoured after growth (the class comment)
-          if (stop_.time_limit_seconds) s.time_limit_seconds = std::max(0.0, *stop_.time_limit_seconds - elapsed());
-          if (!s.time_limit_seconds || *s.time_limit_seconds > 0) r = grow(b, s);
-          else r.stop = StopReason::TimeLimit;
+          r = grow_in_time(b, elapsed());
         } catch (...) {
           failed = std::current_exception();
         }
@@ -120,8 +105,7 @@ class BlockFront {
           next_progress = elapsed() + 0.5;
         }
         ++done;
-        for (const int nb : later[static_cast<std::size_t>(b)])
-          if (--waiting[static_cast<std::size_t>(nb)] == 0) ready.push({layout_.rank(nb), nb});
+        order.finished(b);
         changed.notify_all();
       }
     };
@@ -149,16 +133,10 @@ class BlockFront {
     std::vector<int> mine;
     for (int b = 0; b < n; ++b)
       if (owner(b, exchange) == me) mine.push_back(b);
-    std::sort(mine.begin(), mine.end(), [&](int a, int b) { return layout_.rank(a) < layout_.rank(b); });
-    std::vector<char> here(static_cast<std::size_t>(n), 0);  // grown here, or received
-    auto store = [&](std::pair<int, std::vector<double>>&& m) {
+    Order order(layout_, [&](int b) { return owner(b, exchange) == me; });
+    auto store = [&](std::pair<int, std::vector<double>>&& m) {  // a block another process grew
       Model::add_data(results_[static_cast<std::size_t>(m.first)], m.second.data(), m.second.size());
-      here[static_cast<std::size_t>(m.first)] = 1;
-    };
-    auto ready = [&](int b) {
-      for (const int nb : layout_.neighbours(b))
-        if (layout_.rank(nb) < layout_.rank(b) && !here[static_cast<std::size_t>(nb)]) return false;
-      return true;
+      order.finished(m.first);
     };
     bool timed_out = false;
     RankWork work;
@@ -167,24 +145,21 @@ class BlockFront {
     };
     for (std::size_t left = mine.size(); left > 0;) {
       while (auto m = exchange.receive(false)) store(std::move(*m));
-      const auto next = std::find_if(mine.begin(), mine.end(), [&](int b) { return !here[static_cast<std::size_t>(b)] && ready(b); });
-      if (next == mine.end()) {
+      if (!order.has_ready()) {
         const auto t = std::chrono::steady_clock::now();
         store(std::move(*exchange.receive(true)));
         work.wait_seconds += since(t);
         continue;
       }
-      const int b = *next;
-      StopCriteria s;
-      if (stop_.time_limit_seconds) s.time_limit_seconds = std::max(0.0, *stop_.time_limit_seconds - since(t0));
+      const int b = order.next();
       const auto t = std::chrono::steady_clock::now();
       std::size_t fixed = 0;
-      Result& r = results_[static_cast<std::size_t>(b)] = grow(b, s, &fixed);
+      Result& r = results_[static_cast<std::size_t>(b)] = grow_in_time(b, since(t0), &fixed);
       work.grow_seconds += since(t);
       ++work.blocks;
       work.particles += Model::size(r);
       work.fixed += fixed;
-      here[static_cast<std::size_t>(b)] = 1;
+      order.finished(b);
       --left;
       timed_out |= r.stop == StopReason::TimeLimit;
       std::vector<int> readers;
@@ -238,6 +213,63 @@ class BlockFront {
   }
 
  private:
+  /// The order of growth as blocks finish: how many earlier (lower-rank) neighbours each block
+  /// still waits for, and the blocks ready to grow, lowest rank first, among those `takes`
+  /// accepts (this process's).
+  class Order {
+   public:
+    template <class Takes>
+    Order(const BlockLayout<D>& layout, Takes&& takes) : layout_(layout), waiting_(static_cast<std::size_t>(layout.count()), 0) {
+      later_.resize(waiting_.size());
+      takes_.resize(waiting_.size());
+      for (int b = 0; b < layout.count(); ++b) {
+        takes_[static_cast<std::size_t>(b)] = takes(b);
+        for (const int nb : layout.neighbours(b))
+          if (layout.rank(nb) < layout.rank(b)) ++waiting_[static_cast<std::size_t>(b)];
+          else later_[static_cast<std::size_t>(b)].push_back(nb);
+        make_ready_if_free(b);
+      }
+    }
+    bool has_ready() const { return !ready_.empty(); }
+    int next() {
+      const int b = ready_.top().second;
+      ready_.pop();
+      return b;
+    }
+    /// Block b is there (grown here or received): its later neighbours wait for one block less.
+    void finished(int b) {
+      for (const int nb : later_[static_cast<std::size_t>(b)]) {
+        --waiting_[static_cast<std::size_t>(nb)];
+        make_ready_if_free(nb);
+      }
+    }
+
+   private:
+    void make_ready_if_free(int b) {
+      if (waiting_[static_cast<std::size_t>(b)] == 0 && takes_[static_cast<std::size_t>(b)]) ready_.push({layout_.rank(b), b});
+    }
+    const BlockLayout<D>& layout_;
+    std::vector<int> waiting_;
+    std::vector<std::vector<int>> later_;
+    std::vector<char> takes_;
+    std::priority_queue<std::pair<int, int>, std::vector<std::pair<int, int>>, std::greater<>> ready_;  // (rank, block)
+  };
+
+  /// grow() with what is left of the scene's time limit after `elapsed` seconds; counts and
+  /// fractions are honoured after growth (the class comment). None left: an empty block.
+  Result grow_in_time(int b, double elapsed, std::size_t* fixed = nullptr) const {
+    StopCriteria s;
+    if (stop_.time_limit_seconds) {
+      s.time_limit_seconds = *stop_.time_limit_seconds - elapsed;
+      if (!(*s.time_limit_seconds > 0)) {
+        Result r;
+        r.stop = StopReason::TimeLimit;
+        return r;
+      }
+    }
+    return grow(b, s, fixed);
+  }
+
   /// Grows block b against the particles its earlier neighbours placed near its box (their
   /// number in *fixed, if given).
   Result grow(int b, const StopCriteria& stop, std::size_t* fixed = nullptr) const {
