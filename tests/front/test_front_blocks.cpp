@@ -299,34 +299,33 @@ stop: {particles: 800}
   expect_valid<3>(w.packing, box_distance<3>(Vec3::Zero(), Vec3::Constant(0.5)), 0.002, 0.04, "ratio 20 in blocks");
 }
 
-TEST(BlockFront, SceneKeysAreChecked) {
-  EXPECT_THROW(scene_from_yaml(std::string(kBox3) + "  threads: 5000\n"), fp::SceneError);
-  try {
-    scene_from_yaml(R"(
-dimension: 3
-container: {type: box, min: [0, 0, 0], max: [1, 1, 1]}
-particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
-packer: {block_edge: 0.07}
-)");
-    ADD_FAILURE() << "a block edge below 4 r_max was accepted";
-  } catch (const fp::SceneError& e) {
-    const std::string m = e.what();
-    EXPECT_NE(m.find("block_edge"), std::string::npos) << m;
-    EXPECT_NE(m.find(":5:"), std::string::npos) << m;  // the line of the key
-  }
+/// The scene is refused with a message naming `key` at line 5 (its packer line) and saying `why`.
+void expect_packer_refused(const std::string& packer, const std::string& key, const std::string& why) {
   try {
     scene_from_yaml(R"(
 dimension: 3
 container: {type: box, min: [0, 0, 0], max: [100, 100, 100]}
 particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
-packer: {block_edge: 0.08}
-)");
-    ADD_FAILURE() << "a block edge giving 2 x 10^9 blocks was accepted";
+)" + packer + "\n");
+    ADD_FAILURE() << packer << " was accepted";
   } catch (const fp::SceneError& e) {
     const std::string m = e.what();
-    EXPECT_NE(m.find("more than"), std::string::npos) << m;
-    EXPECT_NE(m.find(":5:"), std::string::npos) << m;
+    EXPECT_NE(m.find(key), std::string::npos) << m;
+    EXPECT_NE(m.find(":5:"), std::string::npos) << m;  // the line of the key
+    EXPECT_NE(m.find(why), std::string::npos) << m;
   }
+}
+
+TEST(BlockFront, SceneKeysAreChecked) {
+  expect_packer_refused("packer: {threads: 5000}", "threads", "from 0");
+  expect_packer_refused("packer: {block_edge: 0.07}", "block_edge", "at least 4");      // below 4 r_max
+  expect_packer_refused("packer: {block_edge: 0.08}", "block_edge", "more than");       // 2 x 10^9 blocks
+  EXPECT_NO_THROW(scene_from_yaml(R"(
+dimension: 3
+container: {type: box, min: [0, 0, 0], max: [100, 100, 100]}
+particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
+packer: {threads: 0, block_edge: 2}
+)"));
 }
 
 }  // namespace
