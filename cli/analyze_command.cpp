@@ -21,6 +21,7 @@
 #include "core/io/output_paths.hpp"
 #include "core/io/temp_file_registry.hpp"
 #include "core/metrics/packing_analysis.hpp"
+#include "core/system/parallel_parts.hpp"
 
 #ifndef FRONTPACK_PLOT_SCRIPT
 #error "FRONTPACK_PLOT_SCRIPT must name python/plot_analysis.py"
@@ -153,6 +154,7 @@ int analyze(const std::optional<Scene>& scene, const Packing<D>& P, const Analyz
     opt.contact_tolerance = scene->packer.contact_tolerance;
   }
   if (o.tolerance >= 0) opt.contact_tolerance = o.tolerance;
+  opt.threads = thread_count(o.threads);
   return report(analyze_packing<D>(P, container, dist, opt), scene, P.radii, dist, o);
 }
 
@@ -164,6 +166,7 @@ template <int D>
 int analyze(const std::optional<Scene>& scene, const ShapePacking<D>& P, const AnalyzeCommandOptions& o) {
   AnalysisOptions opt;
   opt.contact_tolerance = o.tolerance >= 0 ? o.tolerance : scene->packer.minimisation.gap_tolerance;
+  opt.threads = thread_count(o.threads);
   const std::vector<RequestedTemplate> requested = requested_templates(*scene);
   const PackingAnalysis a = analyze_shape_packing<D>(P, *scene, opt);
   std::vector<double> sizes;

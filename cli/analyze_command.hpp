@@ -14,6 +14,7 @@ struct AnalyzeCommandOptions {
   std::string plots_dir;    ///< --plots (must exist)
   double tolerance = -1;    ///< contact tolerance; < 0: the scene's, or 1e-9 without a scene
   std::string python = "/usr/bin/python3";  ///< the interpreter that has matplotlib (Debian's)
+  int threads = 0;          ///< -j: 0 = every hardware thread (the figures do not depend on it)
   bool quiet = false;
 };
 

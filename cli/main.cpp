@@ -77,7 +77,8 @@ int run(int argc, char** argv) {
   pack_cmd->add_option("--format", pack.format, "format of -o: vtu | yade | lammps | csv | json");
   pack_cmd->add_option("-j,--threads", pack.threads,
                        "threads (0: every hardware thread; replaces the scene's packer.threads). Above 1 the "
-                       "container grows in blocks, with the same output for every thread count")
+                       "container grows in blocks, with the same output for every thread count; the validation and analysis "
+                       "use them too")
       ->check(CLI::Range(0, 4096));
   pack_cmd->add_option("--record", pack.record_path, "also write the JSON run record (without particles) to PATH");
   pack_cmd->add_flag("-q,--quiet", pack.quiet, "no summary on stdout");
@@ -101,6 +102,9 @@ int run(int argc, char** argv) {
   validate_cmd->add_option("--ks-alpha", check.ks_alpha, "level of the radii test (K-S; chi-square for a discrete law, exact match for a constant one): "
                            "the radii fail when its p-value is below this (default 0.001, as pack)")
       ->check(CLI::Range(0.0, 1.0));
+  validate_cmd->add_option("-j,--threads", check.threads,
+                           "threads (default 0: every hardware thread); the report is the same for every count")
+      ->check(CLI::Range(0, 4096));
   validate_cmd->add_flag("-q,--quiet", check.quiet, "no report; the exit code only");
 
   fp::AnalyzeCommandOptions an;
@@ -116,6 +120,9 @@ int run(int argc, char** argv) {
   analyze_cmd->add_option("--tolerance", an.tolerance, "contact tolerance relative to min(ri, rj)")
       ->check(CLI::NonNegativeNumber);
   analyze_cmd->add_option("--python", an.python, "interpreter with matplotlib (default /usr/bin/python3)");
+  analyze_cmd->add_option("-j,--threads", an.threads,
+                          "threads (default 0: every hardware thread); the figures are the same for every count")
+      ->check(CLI::Range(0, 4096));
   analyze_cmd->add_flag("-q,--quiet", an.quiet, "no table");
 
   try {

@@ -19,6 +19,7 @@ PackCheck pack_check_of(const PackingAnalysis& a) {
   c.validation = *a.validation;
   c.volume_fraction = a.vf_container.vf.value;
   c.timing_name = "metrics";
+  c.step_timings = a.timings;
   const ContactStats& cs = a.coordination;
   const double n = static_cast<double>(a.particles);
   c.metrics = {{"volume_fraction_core", a.vf_core.vf.value},

@@ -22,6 +22,7 @@ struct PackCheck {
   ValidationReport validation;
   double volume_fraction = 0.0;   ///< of the container (2D: area fraction)
   std::string timing_name;        ///< the record's timing of the check ("metrics": the full analysis)
+  std::vector<std::pair<std::string, double>> step_timings;  ///< the analysis' steps (wall seconds; some run at once)
   std::vector<std::pair<std::string, double>> metrics;           ///< after the record's common metrics
   std::vector<std::pair<std::string, std::uint64_t>> counters;   ///< after the common counters
   std::vector<std::pair<std::string, std::string>> info;         ///< after the common info

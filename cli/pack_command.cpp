@@ -96,6 +96,7 @@ int run(const Scene& scene, const PackCommandOptions& o) {
   RunRecord rec = start_run_record<D>(scene, container, P.size());
   rec.distribution_description = particles_description(scene);
   rec.timings = {{"pack", res.seconds}, {check.timing_name, check_seconds}};
+  for (const auto& [step, seconds] : check.step_timings) rec.timings.emplace_back(check.timing_name + ": " + step, seconds);
   rec.metrics = {{"volume_fraction_container", check.volume_fraction},
                  {"contact_tolerance", v.tolerance},
                  {"mean_coordination", v.mean_coordination()},

@@ -7,6 +7,7 @@
 
 #include "contact/shape_analysis.hpp"
 #include "contact/shape_validation.hpp"
+#include "core/system/parallel_parts.hpp"
 #include "front/block_exchange.hpp"
 #include "core/io/output_format.hpp"
 #include "core/io/scene_limits.hpp"
@@ -45,6 +46,7 @@ PackCheck ShapePack<D>::check(const Scene& scene, const Result& res, CheckDepth 
   const Container<D>& container = *scene.container<D>();
   AnalysisOptions options;
   options.contact_tolerance = res.contact_tolerance;
+  options.threads = thread_count(scene.packer.threads);
   PackCheck c = depth == CheckDepth::Analysis
                     ? pack_check_of(analyze_shape_packing<D>(res.packing, scene, options))
                     : pack_check_of(validate_shapes<D>(res.packing, container, res.contact_tolerance, requested_templates(scene)),

@@ -11,6 +11,7 @@
 #include "cli/run_record_start.hpp"
 #include "contact/shape_validation.hpp"
 #include "core/metrics/validate.hpp"
+#include "core/system/parallel_parts.hpp"
 
 namespace fp {
 namespace {
@@ -66,7 +67,9 @@ int report(const Scene& scene, const ValidationReport& r, const ValidateCommandO
 template <int D>
 int validate(const Scene& scene, const Packing<D>& P, const ValidateCommandOptions& o) {
   const double tol = o.tolerance >= 0 ? o.tolerance : scene.packer.contact_tolerance;
-  return report<D>(scene, validate_packing<D>(P, *scene.container<D>(), scene.radii.get(), tol, o.ks_alpha), o);
+  return report<D>(scene, validate_packing<D>(P, *scene.container<D>(), scene.radii.get(), tol, o.ks_alpha, nullptr,
+                                                 thread_count(o.threads)),
+                   o);
 }
 
 template <int D>

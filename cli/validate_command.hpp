@@ -13,6 +13,7 @@ struct ValidateCommandOptions {
   std::string format;          ///< --format of PACKING; default from its extension
   double tolerance = -1;       ///< overlap allowance relative to min(ri, rj); < 0: the scene's contact_tolerance
   double ks_alpha = kRadiiAlpha;  ///< the radii fail when their test's p-value (radii_fit.hpp) is below this
+  int threads = 0;             ///< -j: 0 = every hardware thread (the report does not depend on it)
   bool quiet = false;
 };
 

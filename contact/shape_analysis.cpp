@@ -120,7 +120,7 @@ PackingAnalysis analyze_shape_packing(const ShapePacking<D>& packing, const Cont
     a.vf_core = vf_region<D>(bodies, container, 2.0 * bounding_max, options.qmc);
   });
 
-  timed_step(t, "g(r)", [&] { a.rdf = radial_distribution(balls, container, options.rdf); });
+  timed_step(t, "g(r)", [&] { a.rdf = radial_distribution(balls, container, options.rdf, std::max(options.threads, 1)); });
   return a;
 }
 

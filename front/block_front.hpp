@@ -34,18 +34,13 @@
 
 #include "core/geometry/container.hpp"
 #include "core/io/scene.hpp"
+#include "core/system/parallel_parts.hpp"
 #include "front/advancing_front.hpp"
 #include "front/block_exchange.hpp"
 #include "front/block_layout.hpp"
 #include "front/front_block.hpp"
 
 namespace fp {
-
-/// Threads to use for `requested` (0: every hardware thread).
-inline int thread_count(int requested) {
-  if (requested > 0) return requested;
-  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-}
 
 template <int D, class Model>
 class BlockFront {

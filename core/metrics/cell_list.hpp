@@ -33,7 +33,13 @@ class CellList {
   /// Calls visit(i, j), i < j, once for every pair of indexed balls whose reach boxes overlap.
   /// The order of the calls is deterministic.
   template <class Visit>
-  void for_each_candidate_pair(Visit&& visit) const;
+  void for_each_candidate_pair(Visit&& visit) const {
+    for_each_candidate_pair(0, 1, visit);
+  }
+  /// The same pairs cut into `parts` parts (every pair in exactly one): part `part` of them, in a
+  /// deterministic order. Parts may run on different threads at once (they only read).
+  template <class Visit>
+  void for_each_candidate_pair(std::size_t part, std::size_t parts, Visit&& visit) const;
 
   /// Number of indexed balls (those not left out).
   std::size_t indexed() const { return indexed_; }
@@ -112,7 +118,7 @@ class CellList {
 
 template <int D>
 template <class Visit>
-void CellList<D>::for_each_candidate_pair(Visit&& visit) const {
+void CellList<D>::for_each_candidate_pair(std::size_t part, std::size_t parts, Visit&& visit) const {
   // Forward half of the 3^D neighbourhood: offsets whose first non-zero component is +1.
   std::vector<Coords> forward;
   {
@@ -162,20 +168,28 @@ void CellList<D>::for_each_candidate_pair(Visit&& visit) const {
       }
       return c;
     };
+    // A part: a range of cells of each level, and a range of each level's balls for the pairs
+    // across levels.
+    auto slice = [part, parts](std::size_t count) {
+      return std::pair<std::size_t, std::size_t>{count * part / parts, count * (part + 1) / parts};
+    };
     if (lv.dense) {
-      const std::uint64_t cells = lv.cell_start.size() - 1;
-      for (std::uint64_t k = 0; k < cells; ++k)
+      const auto [first, last] = slice(lv.cell_start.size() - 1);
+      for (std::uint64_t k = first; k < last; ++k)
         if (lv.cell_start[k] != lv.cell_start[k + 1]) scan_cell(decode(k), lv.cell_start[k], lv.cell_start[k + 1]);
     } else {
-      for (std::size_t r = 0; r < lv.keys.size(); ++r)
+      const auto [first, last] = slice(lv.keys.size());
+      for (std::size_t r = first; r < last; ++r)
         scan_cell(decode(lv.keys[r]), lv.cell_start[r], lv.cell_start[r + 1]);
     }
 
     // Pairs with every coarser level, seen from the finer ball: the coarser ball's centre lies
     // within pad_i + half_cell of it on every axis.
+    const auto [first_ball, last_ball] = slice(lv.members.size());
     for (std::size_t m = l + 1; m < levels_.size(); ++m) {
       const Level& up = levels_[m];
-      for (const std::uint32_t i : lv.members) {
+      for (std::size_t b = first_ball; b < last_ball; ++b) {
+        const std::uint32_t i = lv.members[b];
         const Vec<D>& c = (*centers_)[i];
         const double reach = pads_[i] + up.half_cell;
         Coords lo, hi;

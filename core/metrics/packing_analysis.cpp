@@ -4,12 +4,17 @@
 #include <cmath>
 #include <stdexcept>
 #include <cstdio>
+#include <functional>
 #include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "core/geometry/box_container.hpp"
 #include "core/metrics/contacts.hpp"
 #include "core/metrics/timed_step.hpp"
 #include "core/metrics/volume_fraction.hpp"
+#include "core/system/parallel_parts.hpp"
 
 namespace fp {
 namespace {
@@ -132,28 +137,32 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
   a.container = container->describe();
   a.container_measure = container->measure();
   auto& t = a.timings;
+  const int threads = std::max(options.threads, 1);
 
+  // The contacts are found once: by the validation when it runs (its network), else here; the
+  // coordination and the network's figures share them.
+  ContactNetwork<D> network;
   if (options.validate)
-    timed_step(t, "validate",
-          [&] { a.validation = validate_packing(packing, *container, dist_or_null, options.contact_tolerance); });
+    timed_step(t, "validate", [&] {
+      a.validation = validate_packing(packing, *container, dist_or_null, options.contact_tolerance, kRadiiAlpha,
+                                      &network, threads);
+    });
+  else
+    timed_step(t, "contacts", [&] {
+      network.pairs = find_pair_contacts(packing, options.contact_tolerance);
+      network.walls = find_wall_contacts(packing, *container, options.contact_tolerance);
+    });
+  const std::vector<PairContact>& contacts = network.pairs;
 
-  // The contacts are found once: the coordination and the network's figures share them.
-  std::vector<PairContact> contacts;
-  timed_step(t, "contacts", [&] {
-    contacts = find_pair_contacts(packing, options.contact_tolerance);
-    const std::vector<WallContact> walls = find_wall_contacts(packing, *container, options.contact_tolerance);
-    a.coordination = contact_stats_of(D, packing.size(), contacts, &walls, smallest_radius(packing), options.contact_tolerance);
-    a.max_overlap_rel = a.coordination.max_overlap_rel;
-  });
-  timed_step(t, "contact network", [&] {
+  // The figures below read the packing, the container and the contacts, and each writes its own
+  // members of `a`: they run at once, on the threads given.
+  std::vector<std::pair<const char*, std::function<void()>>> steps;
+  steps.emplace_back("contact network", [&] {  // the largest first: three sorts of every contact
     for (const PairContact& c : contacts) a.max_contact_gap_rel = std::max(a.max_contact_gap_rel, std::abs(c.gap));
     if (a.r_min > 0.0) a.max_contact_gap_rel /= a.r_min;
-    a.partial_coordination = partial_coordination(packing.radii, contacts, options.partial_coordination_points);
-    a.fabric = fabric_tensors(packing, contacts);
     a.projections = relative_projections(packing, contacts, options.projection_bins);
   });
-
-  timed_step(t, "homogeneity", [&] {
+  steps.emplace_back("homogeneity", [&] {
     a.homogeneity = centre_homogeneity(packing, container->bounds(), a.r_max);
     if (dist_or_null != nullptr) {
       a.distribution = dist_or_null->describe();
@@ -168,8 +177,14 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
       }
     }
   });
-
-  timed_step(t, "volume fraction", [&] {
+  steps.emplace_back("coordination", [&] {
+    a.coordination = contact_stats_of(D, packing.size(), contacts, &network.walls, smallest_radius(packing),
+                                      options.contact_tolerance);
+    a.max_overlap_rel = a.coordination.max_overlap_rel;
+    a.partial_coordination = partial_coordination(packing.radii, contacts, options.partial_coordination_points);
+    a.fabric = fabric_tensors(packing, contacts);
+  });
+  steps.emplace_back("volume fraction", [&] {
     const Vec<D> c = container->interior_point();
     const Vec<D> shown = c + container->origin();  // reported in absolute coordinates
     a.reference_center.assign(shown.data(), shown.data() + D);
@@ -183,8 +198,15 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
     a.vf_container = vf_region(packing, *container, 0.0, options.qmc);
     a.vf_core = vf_region(packing, *container, 2.0 * a.r_max, options.qmc);
   });
+  std::vector<double> seconds(steps.size(), 0.0);
+  for_each_part(steps.size(), threads, [&](std::size_t k) {
+    std::vector<std::pair<std::string, double>> one;
+    timed_step(one, steps[k].first, steps[k].second);
+    seconds[k] = one.front().second;
+  });
+  for (std::size_t k = 0; k < steps.size(); ++k) t.emplace_back(steps[k].first, seconds[k]);
 
-  timed_step(t, "g(r)", [&] { a.rdf = radial_distribution(packing, *container, options.rdf); });
+  timed_step(t, "g(r)", [&] { a.rdf = radial_distribution(packing, *container, options.rdf, threads); });
   return a;
 }
 

@@ -43,6 +43,7 @@ struct AnalysisOptions {
   RdfOptions rdf;
   QmcOptions qmc;                       ///< container and core VF
   bool validate = true;                 ///< also run validate_packing (overlap tolerance = contact_tolerance)
+  int threads = 1;                      ///< threads sharing the work; the figures are the same for every count
 };
 
 struct PackingAnalysis {

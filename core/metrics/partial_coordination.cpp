@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/sampling/sort_doubles.hpp"
+
 namespace fp {
 namespace {
 
@@ -22,11 +24,11 @@ PartialCoordination partial_coordination(const std::vector<double>& radii, const
   std::vector<double> r;  // particle radii, ascending
   for (const double v : radii)
     if (usable(v)) r.push_back(v);
-  std::sort(r.begin(), r.end());
+  sort_doubles(r);
   std::vector<double> weakest;  // per contact, the smaller radius: the contact survives while both do
   for (const PairContact& c : contacts)
     if (usable(radii[c.i]) && usable(radii[c.j])) weakest.push_back(std::min(radii[c.i], radii[c.j]));
-  std::sort(weakest.begin(), weakest.end());
+  sort_doubles(weakest);
 
   PartialCoordination out;
   const double r_min = r.empty() ? 0.0 : r.front(), r_max = r.empty() ? 0.0 : r.back();

@@ -4,8 +4,10 @@
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "core/metrics/container_volume_fraction.hpp"
+#include "core/system/parallel_parts.hpp"
 
 namespace fp {
 namespace {
@@ -114,7 +116,7 @@ class CentreGrid {
 
 template <int D>
 RadialDistribution radial_distribution(const Packing<D>& packing, const Container<D>& container,
-                                       const RdfOptions& options) {
+                                       const RdfOptions& options, int threads) {
   if (!(options.range > 0.0) || !std::isfinite(options.range) || options.bins < 1 || options.max_reference < 1)
     throw std::invalid_argument("radial_distribution: need range > 0, bins >= 1 and max_reference >= 1");
   const std::size_t n = packing.size();
@@ -159,16 +161,26 @@ RadialDistribution radial_distribution(const Packing<D>& packing, const Containe
   out.reference_particles = refs.size();
 
   const double to_bin = 1.0 / (width * out.mean_diameter), r_cut2 = r_cut * r_cut;
+  // Counts per part of the references (runs of cells), summed: the same for any thread count.
+  const std::size_t parts = 8 * static_cast<std::size_t>(std::max(threads, 1));
+  std::vector<std::vector<std::uint64_t>> part_hits(parts, std::vector<std::uint64_t>(bins, 0));
+  for_each_part(parts, threads, [&](std::size_t part) {
+    std::vector<std::uint64_t>& hits = part_hits[part];
+    const auto [first, last] = part_range(refs.size(), part, parts);
+    for (std::size_t r = first; r < last; ++r) {
+      const std::uint32_t i = refs[r].second;
+      const Vec<D>& c = packing.centers[i];
+      grid.for_each_near(c, [&](const Vec<D>& q, std::uint32_t slot) {
+        const double d2 = (q - c).squaredNorm();
+        if (d2 >= r_cut2 || (d2 == 0.0 && grid.id(slot) == i)) return;
+        const auto k = static_cast<std::size_t>(std::sqrt(d2) * to_bin);
+        if (k < bins) ++hits[k];
+      });
+    }
+  });
   std::vector<std::uint64_t> hits(bins, 0);
-  for (const auto& [cell, i] : refs) {
-    const Vec<D>& c = packing.centers[i];
-    grid.for_each_near(c, [&](const Vec<D>& q, std::uint32_t slot) {
-      const double d2 = (q - c).squaredNorm();
-      if (d2 >= r_cut2 || (d2 == 0.0 && grid.id(slot) == i)) return;
-      const auto k = static_cast<std::size_t>(std::sqrt(d2) * to_bin);
-      if (k < bins) ++hits[k];
-    });
-  }
+  for (const std::vector<std::uint64_t>& h : part_hits)
+    for (std::size_t k = 0; k < bins; ++k) hits[k] += h[k];
 
   const double ideal = static_cast<double>(out.reference_particles) * out.density;
   for (std::size_t k = 0; k < bins; ++k) {
@@ -179,7 +191,7 @@ RadialDistribution radial_distribution(const Packing<D>& packing, const Containe
   return out;
 }
 
-template RadialDistribution radial_distribution<2>(const Packing<2>&, const Container<2>&, const RdfOptions&);
-template RadialDistribution radial_distribution<3>(const Packing<3>&, const Container<3>&, const RdfOptions&);
+template RadialDistribution radial_distribution<2>(const Packing<2>&, const Container<2>&, const RdfOptions&, int);
+template RadialDistribution radial_distribution<3>(const Packing<3>&, const Container<3>&, const RdfOptions&, int);
 
 }  // namespace fp

@@ -46,8 +46,9 @@ struct RadialDistribution {
 
 /// O(N + N_ref (r_cut / <d>)^D). Throws std::invalid_argument unless range > 0, bins >= 1 and
 /// max_reference >= 1. Balls with a non-finite or non-positive radius or centre are left out.
+/// `threads` share the reference particles; the result is the same for every count.
 template <int D>
 RadialDistribution radial_distribution(const Packing<D>& packing, const Container<D>& container,
-                                       const RdfOptions& options = {});
+                                       const RdfOptions& options = {}, int threads = 1);
 
 }  // namespace fp

@@ -129,7 +129,8 @@ class SphereParticles {
 
 template <int D>
 ValidationReport validate_packing(const Packing<D>& packing, const Container<D>& container,
-                                  const RadiusDistribution* dist_or_null, double overlap_tol_rel, double radii_alpha) {
+                                  const RadiusDistribution* dist_or_null, double overlap_tol_rel, double radii_alpha,
+                                  ContactNetwork<D>* network, int threads) {
   if (!(overlap_tol_rel >= 0.0) || !std::isfinite(overlap_tol_rel))
     throw std::invalid_argument("validate_packing: overlap_tol_rel must be finite and >= 0");
   if (!(radii_alpha >= 0.0 && radii_alpha <= 1.0))
@@ -143,12 +144,13 @@ ValidationReport validate_packing(const Packing<D>& packing, const Container<D>&
 
   std::vector<RequestedTemplate> requested;
   if (dist_or_null) requested.push_back({dist_or_null, 1.0});
-  return validate_particles<D>(SphereParticles<D>(packing, container), overlap_tol_rel, requested, radii_alpha);
+  return validate_particles<D>(SphereParticles<D>(packing, container), overlap_tol_rel, requested, radii_alpha, network,
+                              threads);
 }
 
 template ValidationReport validate_packing<2>(const Packing<2>&, const Container<2>&, const RadiusDistribution*, double,
-                                             double);
+                                             double, ContactNetwork<2>*, int);
 template ValidationReport validate_packing<3>(const Packing<3>&, const Container<3>&, const RadiusDistribution*, double,
-                                             double);
+                                             double, ContactNetwork<3>*, int);
 
 }  // namespace fp

@@ -13,6 +13,7 @@
 
 #include "core/geometry/container.hpp"
 #include "core/geometry/packing.hpp"
+#include "core/metrics/contact_network.hpp"
 #include "core/metrics/radii_fit.hpp"
 #include "core/sampling/chi_square_test.hpp"
 #include "core/sampling/radius_distribution.hpp"
@@ -94,10 +95,13 @@ std::string describe(const ValidationIssue& issue);
 /// with a distribution, a radius is out of range when radius_excess > kRadiusSlack and the radii
 /// fail when the radii_fit p-value is below radii_alpha; without one, only r <= 0 is an issue.
 /// An empty packing fails. Throws std::invalid_argument unless overlap_tol_rel >= 0, and for a
-/// container kind without an independent check.
+/// container kind without an independent check. With `network`, the contacts it found are listed
+/// there (the analysis' contact network: contacts are found once). `threads` share the work; the
+/// report is the same for every count.
 template <int D>
 ValidationReport validate_packing(const Packing<D>& packing, const Container<D>& container,
                                   const RadiusDistribution* dist_or_null, double overlap_tol_rel = 1e-9,
-                                  double radii_alpha = kRadiiAlpha);
+                                  double radii_alpha = kRadiiAlpha, ContactNetwork<D>* network = nullptr,
+                                  int threads = 1);
 
 }  // namespace fp

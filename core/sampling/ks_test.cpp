@@ -4,11 +4,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/sampling/sort_doubles.hpp"
+
 namespace fp {
 
 double ks_statistic(std::vector<double> samples, const std::function<double(double)>& cdf) {
   if (samples.empty()) throw std::invalid_argument("ks_statistic: samples is empty");
-  std::sort(samples.begin(), samples.end());
+  sort_doubles(samples);
   const double n = static_cast<double>(samples.size());
   double d = 0.0;
   for (std::size_t i = 0; i < samples.size(); ++i) {

@@ -123,6 +123,31 @@ TEST(CellList, LeavesOutNonFiniteAndNegativeBalls) {
     for (const std::uint32_t bad : {3u, 5u, 9u}) EXPECT_TRUE(i != bad && j != bad);
 }
 
+// The parts threads share: every pair in exactly one part, for any number of parts, on dense,
+// sparse and multi-level tables.
+TEST(CellList, PartsCoverEveryPairOnce) {
+  Packing<3> sparse;
+  Rng rng(12);
+  for (int cluster = 0; cluster < 10; ++cluster) {
+    const Vec3 at(1e4 * rng.uniform01(), 1e4 * rng.uniform01(), 1e4 * rng.uniform01());
+    for (int k = 0; k < 100; ++k)
+      sparse.add(at + Vec3(rng.uniform(0, 8), rng.uniform(0, 8), rng.uniform(0, 8)), rng.uniform(0.3, 1.0));
+  }
+  for (const Packing<3>& p : {random_balls<3>(2000, 20.0, 0.5, 1.0, false, 13),
+                              random_balls<3>(2000, 30.0, 0.04, 2.0, true, 14), sparse}) {
+    const CellList<3> cells(p.centers, p.radii, 1e-9);
+    const PairSet whole = candidates(cells);
+    for (const std::size_t parts : {1u, 2u, 3u, 7u, 64u, 5000u}) {
+      PairSet seen;
+      for (std::size_t part = 0; part < parts; ++part)
+        cells.for_each_candidate_pair(part, parts, [&](std::uint32_t i, std::uint32_t j) {
+          EXPECT_TRUE(seen.emplace(i, j).second) << "pair " << i << "-" << j << " in two parts of " << parts;
+        });
+      EXPECT_EQ(seen, whole) << parts << " parts";
+    }
+  }
+}
+
 TEST(CellList, DegenerateInputs) {
   Packing<3> empty;
   EXPECT_TRUE(candidates(CellList<3>(empty.centers, empty.radii)).empty());
