@@ -5,13 +5,18 @@
 // The packings are made once per process (the 10^6 one takes ~20 s).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "core/geometry/box_container.hpp"
 #include "core/metrics/packing_analysis.hpp"
+#include "core/metrics/validate.hpp"
+#include "core/sampling/rng.hpp"
+#include "core/sampling/sort_doubles.hpp"
 #include "core/sampling/uniform_radius.hpp"
 #include "front/advancing_front.hpp"
 
@@ -49,13 +54,16 @@ double peak_rss_mb() {
   return 0.0;
 }
 
+// Args: spheres, threads (the figures are the same for every count).
 void BM_AnalyzePacking3D(benchmark::State& state) {
   const Scenario& s = scenario(state.range(0));
   const UniformRadius radii(0.01, 0.02);
+  AnalysisOptions options;
+  options.threads = static_cast<int>(state.range(1));
   std::uint64_t contacts = 0;
   reset_peak_rss();
   for (auto _ : state) {
-    const PackingAnalysis a = analyze_packing<3>(s.packing, &s.box, &radii);
+    const PackingAnalysis a = analyze_packing<3>(s.packing, &s.box, &radii, options);
     contacts = a.coordination.contacts;
     benchmark::DoNotOptimize(a.vf_core.vf.value);
   }
@@ -65,7 +73,48 @@ void BM_AnalyzePacking3D(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(s.packing.size()));
 }
 
-BENCHMARK(BM_AnalyzePacking3D)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_AnalyzePacking3D)->Arg(1000000)->Iterations(3)->Unit(benchmark::kMillisecond);
+// The validation alone (what `pack -q` runs). Args: spheres, threads.
+void BM_ValidatePacking3D(benchmark::State& state) {
+  const Scenario& s = scenario(state.range(0));
+  const UniformRadius radii(0.01, 0.02);
+  const int threads = static_cast<int>(state.range(1));
+  for (auto _ : state) {
+    const ValidationReport r = validate_packing<3>(s.packing, s.box, &radii, 1e-9, kRadiiAlpha, nullptr, threads);
+    benchmark::DoNotOptimize(r.contacts);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(s.packing.size()));
+}
+
+// The sort of the K-S tests (radix) against std::sort, on uniform doubles. Arg: values.
+std::vector<double> uniform_values(std::int64_t n) {
+  Rng rng(5);
+  std::vector<double> v(static_cast<std::size_t>(n));
+  for (double& x : v) x = rng.uniform(0.01, 0.02);
+  return v;
+}
+void BM_SortDoubles(benchmark::State& state) {
+  const std::vector<double> values = uniform_values(state.range(0));
+  for (auto _ : state) {
+    std::vector<double> v = values;
+    sort_doubles(v);
+    benchmark::DoNotOptimize(v.data());
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+void BM_StdSortDoubles(benchmark::State& state) {
+  const std::vector<double> values = uniform_values(state.range(0));
+  for (auto _ : state) {
+    std::vector<double> v = values;
+    std::sort(v.begin(), v.end());
+    benchmark::DoNotOptimize(v.data());
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+BENCHMARK(BM_AnalyzePacking3D)->Args({10000, 1})->Args({100000, 1})->Args({100000, 2})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_AnalyzePacking3D)->Args({1000000, 1})->Args({1000000, 2})->Iterations(3)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ValidatePacking3D)->Args({100000, 1})->Args({100000, 2})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SortDoubles)->Arg(100000)->Arg(3000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StdSortDoubles)->Arg(100000)->Arg(3000000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
