@@ -14,8 +14,9 @@ if [[ "${1:-}" == "--test" ]]; then
   # python3-vtk9: the VTU files are read back by VTK itself; numpy: independent cross-checks;
   # matplotlib: `frontpack analyze --plots`.
   # libopenmpi-dev, openmpi-bin: the test build has FRONTPACK_MPI on (mpirun -np 2 and 3 are tested).
+  # lammps: the LAMMPS data files are read and run by LAMMPS itself (about 10 s to install).
   packages+=(libgtest-dev libgmock-dev libbenchmark-dev python3 python3-numpy python3-vtk9 python3-matplotlib
-             libopenmpi-dev openmpi-bin)
+             libopenmpi-dev openmpi-bin lammps)
 fi
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,89 @@
+#!/bin/sh
+# The real consumer of the LAMMPS data files: Debian's LAMMPS (`lmp`) reads what `frontpack pack`
+# writes, 3D and 2D, from the single front, from threads and (with MPIEXEC, a FRONTPACK_MPI
+# build) from `mpirun -np 2`, and runs granular steps without gravity: every atom stays in the
+# box and nothing moves (largest displacement <= 1e-9 r_min: no overlap to push apart). A copy
+# with one diameter grown by 10 % must move (the check can fail). Exit 77 (skipped) without lmp.
+# Usage: lammps_read_check.sh FRONTPACK [MPIEXEC]
+set -eu
+fp=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+mpi=${2:+"$2 --allow-run-as-root --oversubscribe"}
+command -v lmp > /dev/null || { echo "SKIPPED: no lmp (Debian package lammps; scripts/install-deps.sh --test installs it)"; exit 77; }
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+cd "$dir"
+cat > s3.yaml <<'S'
+dimension: 3
+seed: 11
+container: {type: box, min: [0, 0, 0], max: [0.4, 0.4, 0.4]}
+particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
+packer: {block_edge: 0.15}
+S
+cat > s2.yaml <<'S'
+dimension: 2
+seed: 12
+container: {type: rectangle, min: [0, 0], max: [1, 1]}
+particles: {radius: {distribution: uniform, min: 0.004, max: 0.008}}
+packer: {block_edge: 0.1}
+S
+
+# run_lammps DATA DIM: prints "ATOMS_READ ATOMS_AFTER MAX_DISPLACEMENT"
+run_lammps() {
+  if [ "$2" = 2 ]; then
+    head='dimension 2
+boundary f f p'
+    fixes='fix 1 all nve/sphere disc
+fix 2 all enforce2d'
+  else
+    head='boundary f f f'
+    fixes='fix 1 all nve/sphere'
+  fi
+  cat > in.lmp <<L
+$head
+atom_style sphere
+read_data $1
+pair_style gran/hooke 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+comm_modify vel yes
+neighbor 0.001 bin
+$fixes
+compute d all displace/atom
+compute dmax all reduce max c_d[4]
+thermo_style custom step atoms c_dmax
+thermo_modify format float %.6g lost error
+timestep 1e-6
+run 100
+L
+  lmp -in in.lmp -log none -echo none > lmp.out 2>&1 || { echo "FAIL: lmp could not run $1"; cat lmp.out; exit 1; }
+  read=$(sed -n 's/^ *\([0-9]*\) atoms$/\1/p' lmp.out | head -1)
+  last=$(awk '$1 == "100" && NF == 3 {print $2, $3}' lmp.out | tail -1)
+  echo "$read $last"
+}
+
+check() {  # check DATA DIM R_MIN LABEL
+  n=$(awk '/^Atoms/ {on = 1; next} on && NF >= 7 {c++} END {print c + 0}' "$1")
+  set -- "$@" $(run_lammps "$1" "$2")
+  [ "$5" = "$n" ] && [ "$6" = "$n" ] || { echo "FAIL: $4: $n atoms in the file, LAMMPS read $5 and kept $6"; exit 1; }
+  awk -v d="$7" -v r="$3" 'BEGIN {exit !(d <= 1e-9 * r)}' || { echo "FAIL: $4: atoms moved by $7 (r_min $3)"; exit 1; }
+  echo "$4: $n atoms read and kept, largest displacement $7"
+}
+
+for s in s3 s2; do
+  dim=${s#s}
+  rmin=$( [ $dim = 3 ] && echo 0.01 || echo 0.004 )
+  grep -v '^packer:' $s.yaml > $s-front.yaml  # no block_edge: one front
+  "$fp" pack $s-front.yaml -q -o $s-front.data
+  check $s-front.data $dim $rmin "$s single front"
+  "$fp" pack $s.yaml -j 2 -q -o $s-threads.data
+  check $s-threads.data $dim $rmin "$s -j 2"
+  if [ -n "$mpi" ]; then
+    timeout 300 $mpi -np 2 "$fp" pack $s.yaml -q -o $s-np2.data
+    check $s-np2.data $dim $rmin "$s mpirun -np 2"
+  fi
+done
+
+# The control: one sphere grown by 10 % overlaps its neighbours, and LAMMPS pushes them apart.
+awk '/^Atoms/ {on = 1; print; next} on && NF >= 7 && !done {$3 = $3 * 1.1; done = 1} {print}' s3-front.data > grown.data
+set -- $(run_lammps grown.data 3)
+awk -v d="$3" 'BEGIN {exit !(d > 1e-9 * 0.01)}' || { echo "FAIL: an overlapping sphere did not move anything (displacement $3)"; exit 1; }
+echo "control: a sphere grown by 10 % moved its neighbours by $3"
