@@ -23,6 +23,7 @@ class ShapeParticles {
  public:
   static constexpr const char* kSizeIssue = "size_out_of_range";
   static constexpr const char* kUnitName = "circumscribed radius";
+  static constexpr bool kNormalsAreCentreLines = false;  // the narrow phase's normals
 
   ShapeParticles(const ShapePacking<D>& packing, const Container<D>& container)
       : p_(packing.particles), containment_(container, np_) {

@@ -55,9 +55,9 @@ class AdvancingFront {
   using Result = typename Model::Result;
   using Block = FrontBlock<D, Draft>;
 
-  /// The whole container; or, with `block`, one block of it (front/block_front.hpp): centres in
-  /// block->box only, grown from its fixed particles (or from a void if it has none), growth
-  /// ordered along block->growth_direction.
+  /// The whole container; or, with `block`, one block of it (front/block_front.hpp): s0 in
+  /// block->box only, centres within block->reach of it, grown from its fixed particles (or from
+  /// a void if it has none), growth ordered along block->growth_direction.
   AdvancingFront(const Container<D>& container, const typename Model::Input& input, const PackerOptions& options,
                  const StopCriteria& stop, std::uint64_t seed, const Block* block = nullptr)
       : container_(container), opt_(options), stop_(stop), rng_(seed), block_(block),
@@ -158,6 +158,9 @@ class AdvancingFront {
   void front_push(int id, const Vec<D>& c) {
     if (in_front_.size() <= static_cast<std::size_t>(id)) in_front_.resize(static_cast<std::size_t>(id) + 1, 0);
     in_front_[id] = 1;
+    // A block picks only its own s0: particles beyond its box stay open (contact bodies) but are
+    // never picked: the block's frozen front, where the block that grows there resumes.
+    if (block_ && !block_->box.contains(c)) return;
     if (opt_.front_pick == FrontPick::ClosestToSeed) heap_.push({growth_key(c), id});
     else list_.push_back(id);
   }
@@ -192,7 +195,14 @@ class AdvancingFront {
     const double d = std::max(0.0, (c - seed_point_).norm() - reach);
     return d * d;
   }
-  bool in_block(const Vec<D>& x) const { return !block_ || block_->box.contains(x); }
+  /// Within the block's reach (what touches an s0 of its box): blocks growing at once never
+  /// place particles that could touch.
+  bool in_block(const Vec<D>& x) const {
+    if (!block_) return true;
+    for (int a = 0; a < D; ++a)
+      if (x[a] < block_->box.lo[a] - block_->reach || x[a] > block_->box.hi[a] + block_->reach) return false;
+    return true;
+  }
   bool fits(const Draft& d, const Vec<D>& x) const { return in_block(x) && model_.fits(d, x); }
   bool fits_strictly(const Draft& d, const Vec<D>& x) const { return in_block(x) && model_.fits_strictly(d, x); }
 

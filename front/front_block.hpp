@@ -1,8 +1,8 @@
 #pragma once
 // One block of a container decomposed for parallel growth (front/block_front.hpp): the front
-// places centres inside `box` only. The fixed particles, placed around it before by the blocks
-// that grew earlier, are obstacles, contact bodies and the front the block grows from; they are
-// not part of the block's result.
+// picks s0 inside `box` only and places centres within `reach` of it (touching s0). The fixed
+// particles, placed around it before by the blocks that grew earlier, are obstacles and contact
+// bodies, and those in `box` the front the block resumes; they are not part of its result.
 #include <vector>
 
 #include "core/geometry/vec.hpp"
@@ -11,8 +11,9 @@ namespace fp {
 
 template <int D, class Draft>
 struct FrontBlock {
-  Aabb<D> box;                         ///< where its new centres lie (closed)
+  Aabb<D> box;                         ///< where its s0 lie (closed)
   double halo = 0.0;                   ///< fixed centres lie within this distance of the box
+  double reach = 0.0;                  ///< new centres lie within this distance of the box (picks: in it)
   /// Growth is ordered along this direction (the key of a position x is its dot product with
   /// x - box.lo): a plane sweeping from the low corner, where the neighbours grew, through the
   /// block (front/block_front.hpp).

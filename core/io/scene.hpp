@@ -45,9 +45,10 @@ struct MinimisationOptions {
 enum class ContactSolverChoice { Auto, Minimisation };
 
 /// The smallest block edge of a packing grown in blocks, in largest particle sizes: two blocks
-/// growing at once are a block apart (front/block_front.hpp), beyond the 2 r_max within which
-/// particles touch, with room for a bulk.
-inline constexpr double kMinBlockEdge = 4.0;
+/// growing at once are a block apart (front/block_front.hpp) and each places centres up to
+/// 2 r_max beyond its box, so 6 r_max keeps what they place out of each other's reach; 8 leaves
+/// room for a bulk.
+inline constexpr double kMinBlockEdge = 8.0;
 /// The most blocks a packing grown in blocks may have (each is a unit of scheduling, with its
 /// own bookkeeping): 10^9 spheres on 1,000 ranks want about 1.7 x 10^6 (experiments/scale).
 inline constexpr double kMaxBlocks = 4194304.0;

@@ -7,30 +7,9 @@
 #include <stdexcept>
 
 #include "core/metrics/cell_list.hpp"
+#include "core/metrics/contact_network.hpp"
 
 namespace fp {
-namespace {
-
-// Sorts by (i, j) in O(N): counting sort on i, then insertion sort of each ball's few partners.
-std::vector<PairContact> sorted_by_pair(std::vector<PairContact> in, std::size_t particle_count) {
-  std::vector<std::size_t> start(particle_count + 1, 0);
-  for (const PairContact& c : in) ++start[c.i + 1];
-  for (std::size_t k = 0; k < particle_count; ++k) start[k + 1] += start[k];
-  std::vector<PairContact> out(in.size());
-  {
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for (const PairContact& c : in) out[fill[c.i]++] = c;
-  }
-  for (std::size_t k = 0; k < particle_count; ++k) {
-    const auto first = out.begin() + static_cast<std::ptrdiff_t>(start[k]);
-    const auto last = out.begin() + static_cast<std::ptrdiff_t>(start[k + 1]);
-    for (auto it = first; it != last; ++it)
-      for (auto jt = it; jt != first && (jt - 1)->j > jt->j; --jt) std::iter_swap(jt, jt - 1);
-  }
-  return out;
-}
-
-}  // namespace
 
 template <int D>
 std::vector<PairContact> find_pair_contacts(const Packing<D>& packing, double rel_tol) {
@@ -43,7 +22,10 @@ std::vector<PairContact> find_pair_contacts(const Packing<D>& packing, double re
     const double gap = (packing.centers[i] - packing.centers[j]).norm() - ri - rj;
     if (gap <= rel_tol * std::min(ri, rj)) out.push_back({i, j, gap});
   });
-  return sorted_by_pair(std::move(out), packing.size());
+  ContactNetwork<D> net;
+  net.pairs = std::move(out);
+  sort_by_pair(net, packing.size());
+  return std::move(net.pairs);
 }
 
 template <int D>

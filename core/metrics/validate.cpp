@@ -99,6 +99,7 @@ class SphereParticles {
  public:
   static constexpr const char* kSizeIssue = "radius_out_of_range";
   static constexpr const char* kUnitName = "radius";
+  static constexpr bool kNormalsAreCentreLines = true;
 
   SphereParticles(const Packing<D>& packing, const Container<D>& container) : p_(packing), containment_(container) {}
   std::size_t size() const { return p_.size(); }

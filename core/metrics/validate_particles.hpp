@@ -25,6 +25,7 @@
 //   template_of(i), size_of(i)         the template id and the size drawn from its law
 //   kSizeIssue, kUnitName              the kind of a size out of range ("radius_out_of_range"),
 //                                      the name of the length unit ("radius")
+//   kNormalsAreCentreLines             true for spheres: the network then lists no normals
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -75,26 +76,6 @@ class WorstIssues {
 
 }  // namespace validation_detail
 
-/// Sorts the pairs of a network by (i, j), their normals with them.
-template <int D>
-void sort_by_pair(ContactNetwork<D>& net) {
-  std::vector<std::size_t> order(net.pairs.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const PairContact &x = net.pairs[a], &y = net.pairs[b];
-    return x.i != y.i ? x.i < y.i : x.j < y.j;
-  });
-  ContactNetwork<D> sorted;
-  sorted.pairs.reserve(order.size());
-  sorted.normals.reserve(order.size());
-  for (const std::size_t k : order) {
-    sorted.pairs.push_back(net.pairs[k]);
-    sorted.normals.push_back(net.normals[k]);
-  }
-  net.pairs = std::move(sorted.pairs);
-  net.normals = std::move(sorted.normals);
-}
-
 namespace validation_detail {
 
 // What one part of the particles or of the pairs found; parts merge in any order to the same
@@ -127,6 +108,7 @@ struct Tally {
     network.pairs.insert(network.pairs.end(), t.network.pairs.begin(), t.network.pairs.end());
     network.normals.insert(network.normals.end(), t.network.normals.begin(), t.network.normals.end());
     network.walls.insert(network.walls.end(), t.network.walls.begin(), t.network.walls.end());
+    t.network = ContactNetwork<D>();  // freed as it goes: a million spheres' network is ~50 MB
   }
 };
 
@@ -208,6 +190,7 @@ ValidationReport validate_particles(const Particles& particles, double tolerance
   // Every pair that can overlap or touch: the reach boxes grown by the tolerance.
   const CellList<D> cells(particles.centers(), particles.reach_radii(), tolerance);
   std::vector<Tally<D>> pair_tallies(parts);
+  const bool list_normals = network && !Particles::kNormalsAreCentreLines;
   for_each_part(parts, threads, [&](std::size_t part) {
     Tally<D>& tally = pair_tallies[part];
     ValidationReport& rep = tally.rep;
@@ -215,7 +198,7 @@ ValidationReport validate_particles(const Particles& particles, double tolerance
       ++rep.pairs_checked;
       const double u = scale(std::min(particles.unit(i), particles.unit(j)));
       Vec<D> normal;
-      const double overlap = particles.overlap(i, j, network ? &normal : nullptr) / u;
+      const double overlap = particles.overlap(i, j, list_normals ? &normal : nullptr) / u;
       rep.max_overlap_rel = std::max(rep.max_overlap_rel, overlap);
       if (overlap > tolerance) {
         ++rep.overlap_count;
@@ -226,7 +209,7 @@ ValidationReport validate_particles(const Particles& particles, double tolerance
         rep.max_contact_gap_rel = std::max(rep.max_contact_gap_rel, std::abs(overlap));
         if (network) {
           tally.network.pairs.push_back({i, j, -overlap * u});
-          tally.network.normals.push_back(normal);
+          if (list_normals) tally.network.normals.push_back(normal);
         }
       }
     });
@@ -245,7 +228,7 @@ ValidationReport validate_particles(const Particles& particles, double tolerance
     network->pairs = std::move(all.network.pairs);
     network->normals = std::move(all.network.normals);
     network->walls = std::move(all.network.walls);
-    sort_by_pair(*network);
+    sort_by_pair(*network, n);
   }
 
   // Sizes per template and the mix of templates.

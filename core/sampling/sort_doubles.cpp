@@ -33,23 +33,29 @@ void sort_doubles(std::vector<double>& values) {
     std::sort(values.begin(), values.end(), [](double a, double b) { return key_of(a) < key_of(b); });
     return;
   }
-  std::vector<std::uint64_t> keys(n), spare(n);
+  // The keys live in the values' own storage (bit patterns; moves of doubles keep every bit on
+  // x86-64 and AArch64, NaN patterns included); one spare buffer of n keys.
   std::vector<std::array<std::size_t, kBuckets>> count(kPasses);
   for (auto& c : count) c.fill(0);
-  for (std::size_t i = 0; i < n; ++i) {
-    keys[i] = key_of(values[i]);
-    for (int p = 0; p < kPasses; ++p) ++count[p][(keys[i] >> (p * kDigitBits)) & (kBuckets - 1)];
+  for (double& v : values) {
+    const std::uint64_t k = key_of(v);
+    v = std::bit_cast<double>(k);
+    for (int p = 0; p < kPasses; ++p) ++count[p][(k >> (p * kDigitBits)) & (kBuckets - 1)];
   }
+  std::vector<double> spare(n);
   for (int p = 0; p < kPasses; ++p) {
     std::array<std::size_t, kBuckets>& c = count[p];
     // A digit that every key shares moves nothing (e.g. the sign and exponent of radii).
     if (std::find(c.begin(), c.end(), n) != c.end()) continue;
     std::size_t start = 0;
     for (std::size_t& b : c) start += std::exchange(b, start);
-    for (const std::uint64_t k : keys) spare[c[(k >> (p * kDigitBits)) & (kBuckets - 1)]++] = k;
-    keys.swap(spare);
+    for (const double v : values) {
+      const auto k = std::bit_cast<std::uint64_t>(v);
+      spare[c[(k >> (p * kDigitBits)) & (kBuckets - 1)]++] = v;
+    }
+    values.swap(spare);
   }
-  for (std::size_t i = 0; i < n; ++i) values[i] = value_of(keys[i]);
+  for (double& v : values) v = value_of(std::bit_cast<std::uint64_t>(v));
 }
 
 }  // namespace fp

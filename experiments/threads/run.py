@@ -12,7 +12,8 @@ Usage: run.py FRONTPACK OUTDIR [repeats]
 2. The same packing for every thread count: -j 2, -j 3 and -j 1 with the same blocks
    (packer.block_edge set) are compared byte for byte.
 3. Block faces: boxes cut into blocks of a known edge; the packing fraction of slabs of width r_max
-   centred on the block faces against the slabs inside the blocks (2 r_max or more from a face
+   centred on the block faces, and the loosest slab at offsets up to 3 r_max from them, against
+   the slabs inside the blocks (3 r_max or more from a face
    and from a wall), on the three axes, with the single front's packing of the same box as the
    reference (whose "faces" are the same planes).
 Prints markdown tables; writes OUTDIR/runs.csv.
@@ -99,8 +100,8 @@ def slab_fraction(c, r, axis, lo, hi, area):
 
 
 def faces(binary, out):
-    print("\n| box | block edge | packing | VF container | slabs on block faces | slabs inside blocks | faces - inside |")
-    print("|---|---|---|---|---|---|---|")
+    print("\n| box | block edge | packing | VF container | VF core | slabs centred on faces | worst slab within 3 r_max of a face (offset) | slabs inside blocks | centred - inside | worst - inside |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for side, edge, seed in [(0.9, 0.3, 1), (0.6, 0.2, 21), (1.2, 0.4, 3)]:
         for blocks in (False, True):
             scene = out / "faces.yaml"
@@ -113,17 +114,23 @@ def faces(binary, out):
             c, r = np.stack([d["x"], d["y"], d["z"]], 1), d["r"]
             w, area = 0.02, side * side
             planes = [edge * k for k in range(1, int(round(side / edge)))]
-            on = [slab_fraction(c, r, a, f - w / 2, f + w / 2, area) for a in range(3) for f in planes]
+            # Slabs of r_max at offsets of -3 .. +3 r_max (steps of r_max / 2), averaged over the faces.
+            offsets = [k * w / 2 for k in range(-6, 7)]
+            at = [np.mean([slab_fraction(c, r, a, f + o - w / 2, f + o + w / 2, area) for a in range(3) for f in planes])
+                  for o in offsets]
+            worst = int(np.argmin(at))
             inside = []
             for a in range(3):
                 lo = 0.04
                 while lo + w <= side - 0.04 + 1e-12:
-                    if min(abs(lo + w / 2 - f) for f in planes) >= 0.04:
+                    if min(abs(lo + w / 2 - f) for f in planes) >= 0.06:
                         inside.append(slab_fraction(c, r, a, lo, lo + w, area))
                     lo += w
-            vf = json.loads((out / "x.json").read_text())["metrics"]["volume_fraction_container"]
-            print("| %g | %g | %s | %.4f | %.4f | %.4f | %+.4f |" % (side, edge, "blocks" if blocks else "single front", vf,
-                                                                    np.mean(on), np.mean(inside), np.mean(on) - np.mean(inside)))
+            m = json.loads((out / "x.json").read_text())["metrics"]
+            print("| %g | %g | %s | %.4f | %.4f | %.4f | %.4f (%+.1f r_max) | %.4f | %+.4f | %+.4f |" % (
+                side, edge, "blocks" if blocks else "single front", m["volume_fraction_container"],
+                m["volume_fraction_core"], at[6], at[worst], offsets[worst] / w, np.mean(inside),
+                at[6] - np.mean(inside), at[worst] - np.mean(inside)), flush=True)
 
 
 def main():

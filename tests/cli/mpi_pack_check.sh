@@ -15,7 +15,7 @@ dimension: 3
 seed: 11
 container: {type: box, min: [0, 0, 0], max: [0.5, 0.5, 0.5]}
 particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
-packer: {block_edge: 0.15}
+packer: {block_edge: 0.16}
 stop: {particles: 5000}
 S
 cat > s2.yaml <<'S'

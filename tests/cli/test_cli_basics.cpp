@@ -126,11 +126,11 @@ TEST(CliBasics, ThreadsWriteTheSameBytesForEveryCount) {
   TempDir dir;
   const std::string plain = R"(dimension: 3
 seed: 3
-container: {type: box, min: [0, 0, 0], max: [0.3, 0.3, 0.3]}
+container: {type: box, min: [0, 0, 0], max: [0.4, 0.4, 0.4]}
 particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
 )";
   write_bytes(dir.work() / "plain.yaml", plain);
-  write_bytes(dir.work() / "s.yaml", plain + "packer: {block_edge: 0.15}\n");
+  write_bytes(dir.work() / "s.yaml", plain + "packer: {block_edge: 0.16}\n");
   const RunResult a = run_frontpack(dir, "pack s.yaml -j 2 -q -o a.csv --record a.json");
   const RunResult b = run_frontpack(dir, "pack s.yaml --threads 3 -q -o b.csv");
   const RunResult c = run_frontpack(dir, "pack s.yaml -j 1 -q -o c.csv");

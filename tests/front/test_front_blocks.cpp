@@ -71,12 +71,12 @@ TEST(BlockLayout, TilesTheDomainAndOrdersEveryPairOfNeighbours) {
     EXPECT_EQ(L.box(L.count() - 1).hi, dom.hi);  // the last block ends at the domain's end exactly
     EXPECT_EQ(L.box(0).lo, dom.lo);
   }
-  EXPECT_THROW(BlockLayout<3>(dom, r_max, 3.9 * r_max), std::invalid_argument);
+  EXPECT_THROW(BlockLayout<3>(dom, r_max, 7.9 * r_max), std::invalid_argument);
   // More than kMaxBlocks blocks is refused, not an overflowing count.
   Aabb<3> huge;
   huge.lo = Vec3::Zero();
   huge.hi = Vec3::Constant(1000);
-  EXPECT_THROW(BlockLayout<3>(huge, r_max, 4 * r_max), std::invalid_argument);
+  EXPECT_THROW(BlockLayout<3>(huge, r_max, 8 * r_max), std::invalid_argument);
   EXPECT_EQ(BlockLayout<3>(huge, r_max, 0).count(), 512);  // the automatic edge
   // A domain thinner than a block on an axis has one block there.
   Aabb<2> thin;
@@ -90,9 +90,9 @@ TEST(BlockLayout, TilesTheDomainAndOrdersEveryPairOfNeighbours) {
 const char* kBox3 = R"(
 dimension: 3
 seed: 5
-container: {type: box, min: [0, 0, 0], max: [0.45, 0.45, 0.45]}
+container: {type: box, min: [0, 0, 0], max: [0.48, 0.48, 0.48]}
 particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
-packer: {block_edge: 0.14}
+packer: {block_edge: 0.16}
 )";
 
 TEST(BlockFront, EveryThreadCountGivesTheSameValidPacking3D) {
@@ -101,12 +101,12 @@ TEST(BlockFront, EveryThreadCountGivesTheSameValidPacking3D) {
   ASSERT_GT(one.packing.size(), 2500u);
   EXPECT_EQ(one.counters.blocks, 27u);
   EXPECT_EQ(one.stop, fp::StopReason::FrontExhausted);
-  const Validity v = expect_valid<3>(one.packing, box_distance<3>(Vec3::Zero(), Vec3::Constant(0.45)), 0.01, 0.02, "blocks");
+  const Validity v = expect_valid<3>(one.packing, box_distance<3>(Vec3::Zero(), Vec3::Constant(0.48)), 0.01, 0.02, "blocks");
   EXPECT_GE(v.containment.touching_walls, 300u);
   expect_radii_follow<3>(scene, one.packing, "blocks");
   std::size_t bulk = 0;
-  EXPECT_GT(bulk_mean_coordination<3>(one.packing, box_distance<3>(Vec3::Zero(), Vec3::Constant(0.45)), 0.04, bulk), 5.0);
-  EXPECT_GT(volume_fraction<3>(one.packing, 0.45 * 0.45 * 0.45), 0.57);
+  EXPECT_GT(bulk_mean_coordination<3>(one.packing, box_distance<3>(Vec3::Zero(), Vec3::Constant(0.48)), 0.04, bulk), 5.0);
+  EXPECT_GT(volume_fraction<3>(one.packing, 0.48 * 0.48 * 0.48), 0.57);
   for (const int threads : {2, 3, 8}) {
     const fp::PackResult<3> other = pack_with_threads<3>(kBox3, threads);
     EXPECT_TRUE(bitwise_equal<3>(one.packing, other.packing)) << threads << " threads";
@@ -148,10 +148,14 @@ double slab_fraction(const fp::Packing<3>& P, int axis, double lo, double hi, do
   return v / (area * (hi - lo));
 }
 
-TEST(BlockFront, FacesAreAsDenseAsTheBlocksInside) {
-  // Blocks of 0.2 (10 r_max): faces at 0.2 and 0.4 on each axis. Slabs of r_max centred on a face
-  // against the slabs inside the blocks, 2 r_max or more from a face and a wall. Measured: faces
-  // 0.583 against 0.599 inside; the single front: 0.600 and 0.595 (experiments/threads/RESULTS.md).
+TEST(BlockFront, FacesAreNearlyAsDenseAsTheBlocksInside) {
+  // Blocks of 0.2 (10 r_max): faces at 0.2 and 0.4 on each axis. Slabs of r_max at offsets of
+  // -3 .. +3 r_max from a face (averaged over the six faces), against the slabs inside the blocks,
+  // 3 r_max or more from a face and 2 r_max from a wall. Measured (experiments/threads/RESULTS.md):
+  // inside 0.601; the slab centred on the faces 0.604, the worst, 1.5 r_max beyond a face (where
+  // the later block met the earlier one's frozen front), 0.577. Blocks whose centres stopped at
+  // their faces had a dense layer under each face and a gap over it: 0.545 (the single front: no
+  // slab below 0.591).
   const char* yaml = R"(
 dimension: 3
 seed: 21
@@ -163,20 +167,26 @@ packer: {block_edge: 0.2, threads: 2}
   const fp::Packing<3>& P = res.packing;
   ASSERT_EQ(res.counters.blocks, 27u);
   const double w = 0.02;
-  double faces = 0, inside = 0;
-  int nf = 0, ni = 0;
-  for (int axis = 0; axis < 3; ++axis) {
-    for (const double f : {0.2, 0.4}) faces += slab_fraction(P, axis, f - w / 2, f + w / 2, 0.36), ++nf;
+  double inside = 0;
+  int ni = 0;
+  for (int axis = 0; axis < 3; ++axis)
     for (double lo = 0.04; lo + w <= 0.56 + 1e-12; lo += w) {
       const double c = lo + w / 2;
-      if (std::abs(c - 0.2) < 0.04 || std::abs(c - 0.4) < 0.04) continue;
+      if (std::abs(c - 0.2) < 0.06 || std::abs(c - 0.4) < 0.06) continue;
       inside += slab_fraction(P, axis, lo, lo + w, 0.36), ++ni;
     }
-  }
-  faces /= nf;
   inside /= ni;
   EXPECT_GT(inside, 0.58);
-  EXPECT_GT(faces, inside - 0.025) << "slabs at block faces " << faces << ", inside the blocks " << inside;
+  double worst = 1, centred = 0;
+  for (int k = -6; k <= 6; ++k) {
+    double at = 0;
+    for (int axis = 0; axis < 3; ++axis)
+      for (const double f : {0.2, 0.4}) at += slab_fraction(P, axis, f + k * w / 2 - w / 2, f + k * w / 2 + w / 2, 0.36) / 6;
+    worst = std::min(worst, at);
+    if (k == 0) centred = at;
+  }
+  EXPECT_GT(centred, inside - 0.01) << "slabs centred on block faces " << centred << ", inside the blocks " << inside;
+  EXPECT_GT(worst, inside - 0.035) << "the loosest slab near block faces " << worst << ", inside the blocks " << inside;
 }
 
 TEST(BlockFront, CountStopKeepsTheParticlesNearestTheSeed) {
@@ -210,7 +220,7 @@ TEST(BlockFront, CountStopKeepsTheParticlesNearestTheSeed) {
 TEST(BlockFront, VolumeFractionStopKeepsTheNearestUpToTheTarget) {
   const std::string yaml = std::string(kBox3) + "stop: {volume_fraction: 0.3}\n";
   const fp::PackResult<3> res = pack_with_threads<3>(yaml, 3);
-  const double measure = 0.45 * 0.45 * 0.45;
+  const double measure = 0.48 * 0.48 * 0.48;
   EXPECT_EQ(res.stop, fp::StopReason::VolumeFraction);
   const double vf = volume_fraction<3>(res.packing, measure);
   EXPECT_GE(vf, 0.3);
@@ -238,11 +248,12 @@ packer: {threads: 2, block_edge: 0.1}
 dimension: 3
 seed: 8
 container: {type: cylinder, base: [0, 0, 0], axis: [0, 0, 1], radius: 0.15, height: 0.3}
-particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
-packer: {threads: 2, block_edge: 0.14}
+particles: {radius: {distribution: uniform, min: 0.008, max: 0.015}}
+packer: {threads: 2, block_edge: 0.12}
 )";
   const fp::PackResult<3> c = fp::pack<3>(scene_from_yaml(cylinder));
-  expect_valid<3>(c.packing, cylinder_distance(Vec3::Zero(), Vec3::UnitZ(), 0.15, 0.3), 0.01, 0.02, "cylinder in blocks");
+  EXPECT_GT(c.counters.blocks, 1u);
+  expect_valid<3>(c.packing, cylinder_distance(Vec3::Zero(), Vec3::UnitZ(), 0.15, 0.3), 0.008, 0.015, "cylinder in blocks");
   EXPECT_GT(volume_fraction<3>(c.packing, fp::kPi * 0.15 * 0.15 * 0.3), 0.5);
 
   // A slab one particle thick: one block across it, a grid of blocks along it.
@@ -264,14 +275,14 @@ TEST(BlockFront, FarAwayScaledAndWideRatiosInBlocks) {
   const char* far = R"(
 dimension: 3
 seed: 4
-container: {type: box, min: [1e9, -1e9, 0], max: [1000000000.3, -999999999.7, 0.3]}
+container: {type: box, min: [1e9, -1e9, 0], max: [1000000000.4, -999999999.6, 0.4]}
 particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
-packer: {threads: 2, block_edge: 0.14}
+packer: {threads: 2, block_edge: 0.16}
 )";
   const fp::Scene far_scene = scene_from_yaml(far);
   const fp::PackResult<3> f = fp::pack<3>(far_scene);
   EXPECT_GT(f.counters.blocks, 1u);
-  expect_valid<3>(f.packing, box_distance<3>(Vec3(1e9, -1e9, 0), Vec3(1e9 + 0.3, -1e9 + 0.3, 0.3)), 0.01, 0.02, "1e9 away");
+  expect_valid<3>(f.packing, box_distance<3>(Vec3(1e9, -1e9, 0), Vec3(1e9 + 0.4, -1e9 + 0.4, 0.4)), 0.01, 0.02, "1e9 away");
   // Scaled by 2^-60: the same blocks at another scale.
   const double s = std::ldexp(1.0, -60);
   char tiny[600];
@@ -281,22 +292,24 @@ seed: 4
 container: {type: box, min: [0, 0, 0], max: [%.17g, %.17g, %.17g]}
 particles: {radius: {distribution: uniform, min: %.17g, max: %.17g}}
 packer: {threads: 2, block_edge: %.17g}
-)", 0.3 * s, 0.3 * s, 0.3 * s, 0.01 * s, 0.02 * s, 0.14 * s);
+)", 0.4 * s, 0.4 * s, 0.4 * s, 0.01 * s, 0.02 * s, 0.16 * s);
   const fp::PackResult<3> t = fp::pack<3>(scene_from_yaml(tiny));
-  expect_valid<3>(t.packing, box_distance<3>(Vec3::Zero(), Vec3::Constant(0.3 * s)), 0.01 * s, 0.02 * s, "2^-60");
-  EXPECT_GT(t.packing.size(), 800u);
+  expect_valid<3>(t.packing, box_distance<3>(Vec3::Zero(), Vec3::Constant(0.4 * s)), 0.01 * s, 0.02 * s, "2^-60");
+  EXPECT_GT(t.packing.size(), 2000u);
+  EXPECT_EQ(t.counters.blocks, 8u);
   // r_max / r_min = 20: the blocks' hierarchical grids.
   const char* wide = R"(
 dimension: 3
 seed: 3
-container: {type: box, min: [0, 0, 0], max: [0.5, 0.5, 0.5]}
+container: {type: box, min: [0, 0, 0], max: [0.64, 0.64, 0.64]}
 particles: {radius: {distribution: uniform, min: 0.002, max: 0.04}}
-packer: {threads: 2, block_edge: 0.28}
+packer: {threads: 2, block_edge: 0.32}
 stop: {particles: 800}
 )";
   const fp::PackResult<3> w = fp::pack<3>(scene_from_yaml(wide));
   EXPECT_EQ(w.packing.size(), 800u);
-  expect_valid<3>(w.packing, box_distance<3>(Vec3::Zero(), Vec3::Constant(0.5)), 0.002, 0.04, "ratio 20 in blocks");
+  EXPECT_EQ(w.counters.blocks, 8u);
+  expect_valid<3>(w.packing, box_distance<3>(Vec3::Zero(), Vec3::Constant(0.64)), 0.002, 0.04, "ratio 20 in blocks");
 }
 
 /// The scene is refused with a message naming `key` at line 5 (its packer line) and saying `why`.
@@ -318,8 +331,8 @@ particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
 
 TEST(BlockFront, SceneKeysAreChecked) {
   expect_packer_refused("packer: {threads: 5000}", "threads", "from 0");
-  expect_packer_refused("packer: {block_edge: 0.07}", "block_edge", "at least 4");      // below 4 r_max
-  expect_packer_refused("packer: {block_edge: 0.08}", "block_edge", "more than");       // 2 x 10^9 blocks
+  expect_packer_refused("packer: {block_edge: 0.15}", "block_edge", "at least 8");      // below 8 r_max
+  expect_packer_refused("packer: {block_edge: 0.16}", "block_edge", "more than");       // 2.4 x 10^8 blocks
   EXPECT_NO_THROW(scene_from_yaml(R"(
 dimension: 3
 container: {type: box, min: [0, 0, 0], max: [100, 100, 100]}
