@@ -56,7 +56,7 @@ class AdvancingFront {
   using Block = FrontBlock<D, Draft>;
 
   /// The whole container; or, with `block`, one block of it (front/block_front.hpp): s0 in
-  /// block->box only, centres within block->reach of it, grown from its fixed particles (or from
+  /// block->box only, centres where block->may_place(), grown from its fixed particles (or from
   /// a void if it has none), growth ordered along block->growth_direction.
   AdvancingFront(const Container<D>& container, const typename Model::Input& input, const PackerOptions& options,
                  const StopCriteria& stop, std::uint64_t seed, const Block* block = nullptr)
@@ -169,12 +169,12 @@ class AdvancingFront {
 
   // ---- a block of a decomposed container ----
   /// Where the model's neighbour grid must hold centres: the container, or the block's box
-  /// grown by its halo of fixed particles.
+  /// grown by its reach and the halo of fixed particles around that.
   static Aabb<D> centres_domain(const Container<D>& container, const Block* block) {
     Aabb<D> b = container.bounds();
     if (!block) return b;
-    b.lo = b.lo.cwiseMax((block->box.lo.array() - block->halo).matrix());
-    b.hi = b.hi.cwiseMin((block->box.hi.array() + block->halo).matrix());
+    b.lo = b.lo.cwiseMax((block->box.lo.array() - block->reach - block->halo).matrix());
+    b.hi = b.hi.cwiseMin((block->box.hi.array() + block->reach + block->halo).matrix());
     return b;
   }
   /// The fixed particles get the first ids, all in F (dropped from the result by run()).
@@ -195,14 +195,9 @@ class AdvancingFront {
     const double d = std::max(0.0, (c - seed_point_).norm() - reach);
     return d * d;
   }
-  /// Within the block's reach (what touches an s0 of its box): blocks growing at once never
-  /// place particles that could touch.
-  bool in_block(const Vec<D>& x) const {
-    if (!block_) return true;
-    for (int a = 0; a < D; ++a)
-      if (x[a] < block_->box.lo[a] - block_->reach || x[a] > block_->box.hi[a] + block_->reach) return false;
-    return true;
-  }
+  /// In the block's box, or within its reach towards a neighbour that grows later: blocks
+  /// growing at once never place particles that could touch.
+  bool in_block(const Vec<D>& x) const { return !block_ || block_->may_place(x); }
   bool fits(const Draft& d, const Vec<D>& x) const { return in_block(x) && model_.fits(d, x); }
   bool fits_strictly(const Draft& d, const Vec<D>& x) const { return in_block(x) && model_.fits_strictly(d, x); }
 

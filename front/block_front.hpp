@@ -1,21 +1,22 @@
 #pragma once
 // The advancing front on several threads (issue 11). The container's bounding box is cut into
 // blocks (front/block_layout.hpp); each block grows with its own front, neighbour grid and random
-// stream. A block picks s0 only inside its box, but places particles wherever they touch s0:
-// up to 2 r_max beyond its faces. Those beyond stay unpicked: the block's front frozen there,
-// where the neighbour that grows later resumes it (the neighbour's own s0 are in its box).
-// A block grows once every neighbour of lower rank has grown, and never beside a growing
-// neighbour: blocks growing at once are at least a block edge (>= 8 r_max) apart, beyond what
-// their particles can reach (2 r_max beyond each box, and 2 r_max to touch). A block grows
-// against what its earlier neighbours placed: their particles within 4 r_max of its box are its
-// fixed particles (obstacles, contact bodies, and the front it resumes: those in its box). Its
-// growth is ordered along the diagonal (1, 1, 1): a plane sweeping from its low corner, where its
-// earlier neighbours are, meeting its high faces and the container's walls obliquely.
-// (Measured in experiments/threads: blocks whose centres stopped at their faces left a dense
-// layer of centres under each face and a gap over it, the slab of r_max there 0.055 looser than
-// the blocks' inside; resuming the frozen front leaves 0.024 at the worst slab, 1.5 r_max beyond
-// the face. A cap from a point beyond the low corner leaves looser seams the nearer the point; a
-// sweep along one axis leaves holes where it ends against a wall parallel to its plane.)
+// stream. A block picks s0 only inside its box, but towards its neighbours that grow later it
+// places particles wherever they touch s0, up to 2 r_max beyond its faces; those stay unpicked:
+// its front frozen there, which the neighbour resumes (its fixed particles in its box are its
+// initial front). A block grows once every neighbour of lower rank has grown, and never beside
+// a growing neighbour: blocks growing at once are at least a block edge (>= 8 r_max) apart,
+// beyond what their particles can reach (2 r_max beyond a box, and 2 r_max to touch). A block
+// grows against what its earlier neighbours placed within 2 r_max of where it places (fixed:
+// obstacles, contact bodies, and in its box its initial front). Its growth is ordered along the
+// diagonal (1, 1, 1): a plane sweeping from its low corner, where its earlier neighbours are,
+// meeting its high faces and the container's walls obliquely. (Measured in experiments/threads:
+// blocks whose centres stopped at their faces left a dense layer of centres under each face and
+// a gap over it, the loosest slab of r_max near a face 0.055 below the blocks' inside; resuming
+// the frozen front leaves 0.018-0.024, 1.5 r_max beyond the face. Placing beyond the faces
+// towards earlier neighbours too changed nothing and doubled the fixed particles. A cap from a
+// point beyond the low corner leaves looser seams the nearer the point; a sweep along one axis
+// leaves holes where it ends against a wall parallel to its plane.)
 //
 // The layout depends on the scene only, and a block's input is what its earlier neighbours
 // placed: the output is identical for every thread count (1 included). It differs from the single
@@ -273,17 +274,28 @@ class BlockFront {
   Result grow(int b, const StopCriteria& stop, std::size_t* fixed = nullptr) const {
     Block block;
     block.box = layout_.box(b);
+    // What touches an s0 in the box lies within 2 r_max of it: the block places there towards
+    // the neighbours that grow later (their part of its frozen front).
+    block.reach = 2 * r_max_;
+    const int rank = layout_.rank(b);
+    const std::array<int, D> at = layout_.coords(b);
+    block.open_side[Block::kInside] = true;
+    for (const int nb : layout_.neighbours(b)) {
+      if (layout_.rank(nb) < rank) continue;
+      const std::array<int, D> k = layout_.coords(nb);
+      int side = 0;
+      for (int a = D - 1; a >= 0; --a) side = 3 * side + (k[a] - at[a] + 1);
+      block.open_side[static_cast<std::size_t>(side)] = true;
+    }
     // Two particles can touch only if their centres are within 2 r_max; the margin covers the
     // contact tolerance and the rounding of the distance.
-    block.reach = 2 * r_max_;
-    block.halo = (block.reach + 2 * r_max_) * (1 + 1e-6);
-    const int rank = layout_.rank(b);
+    block.halo = 2 * r_max_ * (1 + 1e-6);
     for (const int nb : layout_.neighbours(b)) {
       if (layout_.rank(nb) > rank) continue;  // grows later: nothing placed yet
       const Result& r = results_[static_cast<std::size_t>(nb)];
       for (std::size_t i = 0; i < Model::size(r); ++i) {
         const Vec<D>& x = Model::position_of(r, i);
-        if (distance_to_box(block.box, x) > block.halo) continue;
+        if (block.distance_to_placements(x) > block.halo) continue;
         block.fixed_drafts.push_back(Model::draft_of(r, i));
         block.fixed_positions.push_back(x);
       }

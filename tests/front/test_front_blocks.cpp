@@ -12,6 +12,7 @@
 
 #include "core/sampling/ks_test.hpp"
 #include "front/block_layout.hpp"
+#include "front/front_block.hpp"
 #include "front_checks.hpp"
 
 namespace fptest {
@@ -85,6 +86,30 @@ TEST(BlockLayout, TilesTheDomainAndOrdersEveryPairOfNeighbours) {
   const BlockLayout<2> T(thin, r_max, 0.1);
   EXPECT_EQ(T.blocks_on_axis(1), 1);
   EXPECT_EQ(T.blocks_on_axis(0), 10);
+}
+
+// Where a block may place centres: its box, and within its reach beyond the sides whose
+// neighbour grows later (its frozen front); nowhere towards a neighbour grown before it.
+TEST(FrontBlock, PlacesInItsBoxAndTowardsLaterNeighboursOnly) {
+  fp::FrontBlock<3, double> block;
+  block.box.lo = Vec3::Zero();
+  block.box.hi = Vec3::Ones();
+  block.reach = 0.1;
+  block.open_side[fp::FrontBlock<3, double>::kInside] = true;
+  block.open_side[2 * 1 + 3 * 1 + 9 * 1] = true;  // o = (+1, 0, 0)
+  block.open_side[2 * 1 + 3 * 2 + 9 * 1] = true;  // o = (+1, +1, 0)
+  EXPECT_TRUE(block.may_place(Vec3(0.5, 0.5, 0.5)));
+  EXPECT_TRUE(block.may_place(Vec3(1.0, 1.0, 1.0)));    // the closed box
+  EXPECT_TRUE(block.may_place(Vec3(1.05, 0.5, 0.5)));   // beyond +x, within reach
+  EXPECT_TRUE(block.may_place(Vec3(1.1, 1.1, 0.2)));    // beyond the +x +y edge
+  EXPECT_FALSE(block.may_place(Vec3(1.11, 0.5, 0.5)));  // beyond reach
+  EXPECT_FALSE(block.may_place(Vec3(-0.05, 0.5, 0.5))); // towards an earlier neighbour
+  EXPECT_FALSE(block.may_place(Vec3(0.5, 1.05, 0.5)));  // +y alone is not open
+  EXPECT_FALSE(block.may_place(Vec3(1.05, 0.5, 1.05))); // nor +x +z
+  EXPECT_DOUBLE_EQ(block.distance_to_placements(Vec3(0.5, 0.5, 0.5)), 0.0);
+  EXPECT_DOUBLE_EQ(block.distance_to_placements(Vec3(1.3, 0.5, 0.5)), 0.2);   // from the +x side
+  EXPECT_DOUBLE_EQ(block.distance_to_placements(Vec3(-0.3, 0.5, 0.5)), 0.3);  // from the box
+  EXPECT_DOUBLE_EQ(block.distance_to_placements(Vec3(0.5, 1.3, 0.5)), 0.3);
 }
 
 const char* kBox3 = R"(
