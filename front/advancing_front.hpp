@@ -158,9 +158,13 @@ class AdvancingFront {
   void front_push(int id, const Vec<D>& c) {
     if (in_front_.size() <= static_cast<std::size_t>(id)) in_front_.resize(static_cast<std::size_t>(id) + 1, 0);
     in_front_[id] = 1;
-    // A block picks only its own s0: particles beyond its box stay open (contact bodies) but are
-    // never picked: the block's frozen front, where the block that grows there resumes.
-    if (block_ && !block_->box.contains(c)) return;
+    // A block picks only its own s0. Beyond its box, where it may place (towards later
+    // neighbours) particles stay open, as contact bodies: its frozen front, which the neighbour
+    // resumes. In the earlier neighbours' boxes they are closed: those blocks are done there.
+    if (block_ && !block_->box.contains(c)) {
+      in_front_[id] = block_->may_place(c) ? 1 : 0;
+      return;
+    }
     if (opt_.front_pick == FrontPick::ClosestToSeed) heap_.push({growth_key(c), id});
     else list_.push_back(id);
   }
