@@ -161,16 +161,28 @@ class BlockFront {
       order.finished(b);
       --left;
       timed_out |= r.stop == StopReason::TimeLimit;
+      // Each process growing a later neighbour gets the particles of b those blocks fix (grow()
+      // selects the same ones, in the same order, from what it receives).
       std::vector<int> readers;
       for (const int nb : layout_.neighbours(b))
         if (layout_.rank(nb) > layout_.rank(b) && owner(nb, exchange) != me) readers.push_back(owner(nb, exchange));
       std::sort(readers.begin(), readers.end());
       readers.erase(std::unique(readers.begin(), readers.end()), readers.end());
-      if (readers.empty()) continue;
-      std::vector<double> data;
-      Model::append_data(r, data);
-      work.doubles_sent += data.size() * readers.size();
-      for (const int to : readers) exchange.send(to, b, data);
+      for (const int to : readers) {
+        std::vector<Block> theirs;
+        for (const int nb : layout_.neighbours(b))
+          if (layout_.rank(nb) > layout_.rank(b) && owner(nb, exchange) == to) theirs.push_back(placements_of(nb));
+        Result part = r;
+        Model::keep_only(part, [&](std::size_t i) {
+          const Vec<D>& x = Model::position_of(r, i);
+          return std::any_of(theirs.begin(), theirs.end(),
+                             [&](const Block& k) { return k.distance_to_placements(x) <= k.halo; });
+        });
+        std::vector<double> data;
+        Model::append_data(part, data);
+        work.doubles_sent += data.size();
+        exchange.send(to, b, data);
+      }
     }
     // Process 0 gathers the blocks with their counters, [timed out, grid bytes, counters...,
     // particles...], and each process's work as a block of its own (index n + process).
@@ -269,14 +281,15 @@ class BlockFront {
     return grow(b, s, fixed);
   }
 
-  /// Grows block b against the particles its earlier neighbours placed near its box (their
-  /// number in *fixed, if given).
-  Result grow(int b, const StopCriteria& stop, std::size_t* fixed = nullptr) const {
+  /// Where block b places particles (its box, and 2 r_max beyond the sides whose neighbour
+  /// grows later: what touches an s0 of its box, its frozen front there), and how near that its
+  /// earlier neighbours' particles are fixed: two particles touch only within 2 r_max of each
+  /// other (the margin covers the contact tolerance and the rounding of the distance).
+  Block placements_of(int b) const {
     Block block;
     block.box = layout_.box(b);
-    // What touches an s0 in the box lies within 2 r_max of it: the block places there towards
-    // the neighbours that grow later (their part of its frozen front).
     block.reach = 2 * r_max_;
+    block.halo = 2 * r_max_ * (1 + 1e-6);
     const int rank = layout_.rank(b);
     const std::array<int, D> at = layout_.coords(b);
     block.open_side[Block::kInside] = true;
@@ -287,9 +300,14 @@ class BlockFront {
       for (int a = D - 1; a >= 0; --a) side = 3 * side + (k[a] - at[a] + 1);
       block.open_side[static_cast<std::size_t>(side)] = true;
     }
-    // Two particles can touch only if their centres are within 2 r_max; the margin covers the
-    // contact tolerance and the rounding of the distance.
-    block.halo = 2 * r_max_ * (1 + 1e-6);
+    return block;
+  }
+
+  /// Grows block b against the particles its earlier neighbours placed near where it places
+  /// (their number in *fixed, if given).
+  Result grow(int b, const StopCriteria& stop, std::size_t* fixed = nullptr) const {
+    Block block = placements_of(b);
+    const int rank = layout_.rank(b);
     for (const int nb : layout_.neighbours(b)) {
       if (layout_.rank(nb) > rank) continue;  // grows later: nothing placed yet
       const Result& r = results_[static_cast<std::size_t>(nb)];
