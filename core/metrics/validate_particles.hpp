@@ -74,10 +74,6 @@ class WorstIssues {
   std::vector<ValidationIssue> heap_;
 };
 
-}  // namespace validation_detail
-
-namespace validation_detail {
-
 // What one part of the particles or of the pairs found; parts merge in any order to the same
 // report (sums, maxima, the worst issues by a total order, lists concatenated in part order or
 // sorted).
@@ -108,7 +104,8 @@ struct Tally {
     network.pairs.insert(network.pairs.end(), t.network.pairs.begin(), t.network.pairs.end());
     network.normals.insert(network.normals.end(), t.network.normals.begin(), t.network.normals.end());
     network.walls.insert(network.walls.end(), t.network.walls.begin(), t.network.walls.end());
-    t.network = ContactNetwork<D>();  // freed as it goes: a million spheres' network is ~50 MB
+    t.network = ContactNetwork<D>();  // freed as they go: a million spheres' network is ~50 MB
+    t.sizes = {};
   }
 };
 
