@@ -33,7 +33,9 @@ constexpr const char* kScratchMeshes[] = {
 // Words of the file formats that messages may name although they look like C++ class names.
 constexpr std::string_view kFormatWords[] = {"VTKFile", "UnstructuredGrid", "LittleEndian", "BigEndian", "NumberOfPoints",
                                              "NumberOfCells", "NumberOfComponents", "AppendedData", "DataArray",
-                                             "PointData", "FieldData"};
+                                             "PointData", "FieldData", "MeshFormat", "EndMeshFormat",
+                                             "PhysicalNames", "EndPhysicalNames", "EndEntities", "EndNodes",
+                                             "EndElements"};
 
 /// The first CamelCase word of `text` with two humps or more ("BoxContainer", "LognormalRadius"):
 /// the names of frontpack's own classes, which README promises never to show. Empty if none.

@@ -1,0 +1,26 @@
+#pragma once
+// A tetrahedral mesh as frontpack uses it (issue 12, paper 000's packing of a finite-element
+// mesh): nodes, linear tetrahedra and the triangles the file lists (boundary or interface
+// faces), each with the physical group it belongs to, and the groups' names.
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/geometry/vec.hpp"
+
+namespace fp {
+
+struct TetMesh {
+  std::vector<Vec3> nodes;
+  std::vector<std::array<std::uint32_t, 4>> tets;       ///< node indices (0-based), as the file orders them
+  std::vector<int> tet_group;                           ///< physical group tag per tet (0: none)
+  std::vector<std::array<std::uint32_t, 3>> triangles;  ///< node indices (0-based)
+  std::vector<int> triangle_group;                      ///< physical group tag per triangle (0: none)
+  /// (dimension, tag) -> name, for the physical groups the file names.
+  std::map<std::pair<int, int>, std::string> group_names;
+};
+
+}  // namespace fp
