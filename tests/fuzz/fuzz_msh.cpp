@@ -1,12 +1,13 @@
 // Fuzz harness of the MSH reader (core/geometry/msh_reader.hpp: Gmsh's versions 2.2 and 4.1,
 // ASCII and binary). Property: read_msh returns true, or false with a message (never throws, no
 // C++ internals in it); a mesh it accepts has every element's node index in range, one group per
-// element, and finite nodes.
+// element, and finite nodes, and tet_mesh_problem judges it without throwing.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
 #include "core/geometry/msh_reader.hpp"
+#include "core/geometry/tet_mesh_check.hpp"
 #include "fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -33,5 +34,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const auto& t : mesh.triangles)
     for (const std::uint32_t n : t) require(n < mesh.nodes.size(), "a triangle's node index out of range");
   for (const auto& x : mesh.nodes) require(x.allFinite(), "a node that is not finite");
+  try {
+    const std::string problem = fp::tet_mesh_problem(mesh);
+    if (!problem.empty()) fp::fuzz::check_error_message(problem, input, "tet_mesh_problem");
+  } catch (...) {
+    fp::fuzz::unexpected_exception("tet_mesh_problem");
+  }
   return 0;
 }
