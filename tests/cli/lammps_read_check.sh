@@ -6,26 +6,14 @@
 # with one diameter grown by 10 % must move (the check can fail). Exit 77 (skipped) without lmp.
 # Usage: lammps_read_check.sh FRONTPACK [MPIEXEC]
 set -eu
+here=$(cd "$(dirname "$0")" && pwd)
 fp=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 mpi=${2:+"$2 --allow-run-as-root --oversubscribe"}
 command -v lmp > /dev/null || { echo "SKIPPED: no lmp (Debian package lammps; scripts/install-deps.sh --test installs it)"; exit 77; }
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 cd "$dir"
-cat > s3.yaml <<'S'
-dimension: 3
-seed: 11
-container: {type: box, min: [0, 0, 0], max: [0.4, 0.4, 0.4]}
-particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
-packer: {block_edge: 0.16}
-S
-cat > s2.yaml <<'S'
-dimension: 2
-seed: 12
-container: {type: rectangle, min: [0, 0], max: [1, 1]}
-particles: {radius: {distribution: uniform, min: 0.004, max: 0.008}}
-packer: {block_edge: 0.1}
-S
+. "$here/block_scenes.sh"
 
 # run_lammps DATA DIM: prints "ATOMS_READ ATOMS_AFTER MAX_DISPLACEMENT"
 run_lammps() {

@@ -5,26 +5,13 @@
 # code of the failure and nothing written, and do not hang.
 # Usage: mpi_pack_check.sh FRONTPACK MPIEXEC
 set -eu
+here=$(cd "$(dirname "$0")" && pwd)
 fp=$1
 mpi="$2 --allow-run-as-root --oversubscribe"
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 cd "$dir"
-cat > s3.yaml <<'S'
-dimension: 3
-seed: 11
-container: {type: box, min: [0, 0, 0], max: [0.5, 0.5, 0.5]}
-particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
-packer: {block_edge: 0.16}
-stop: {particles: 5000}
-S
-cat > s2.yaml <<'S'
-dimension: 2
-seed: 12
-container: {type: rectangle, min: [0, 0], max: [1, 1]}
-particles: {radius: {distribution: uniform, min: 0.004, max: 0.008}}
-packer: {block_edge: 0.1}
-S
+. "$here/block_scenes.sh"
 for s in s3 s2; do
   "$fp" pack $s.yaml -j 2 -q -o $s-threads.csv
   for k in 2 3; do
