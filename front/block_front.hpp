@@ -31,6 +31,7 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <map>
 #include <mutex>
 #include <queue>
 #include <thread>
@@ -163,20 +164,15 @@ class BlockFront {
       timed_out |= r.stop == StopReason::TimeLimit;
       // Each process growing a later neighbour gets the particles of b those blocks fix (grow()
       // selects the same ones, in the same order, from what it receives).
-      std::vector<int> readers;
+      std::map<int, std::vector<Block>> readers;  // process -> the later neighbours it grows
       for (const int nb : layout_.neighbours(b))
-        if (layout_.rank(nb) > layout_.rank(b) && owner(nb, exchange) != me) readers.push_back(owner(nb, exchange));
-      std::sort(readers.begin(), readers.end());
-      readers.erase(std::unique(readers.begin(), readers.end()), readers.end());
-      for (const int to : readers) {
-        std::vector<Block> theirs;
-        for (const int nb : layout_.neighbours(b))
-          if (layout_.rank(nb) > layout_.rank(b) && owner(nb, exchange) == to) theirs.push_back(placements_of(nb));
+        if (layout_.rank(nb) > layout_.rank(b) && owner(nb, exchange) != me)
+          readers[owner(nb, exchange)].push_back(placements_of(nb));
+      for (const auto& [to, theirs] : readers) {
         Result part = r;
         Model::keep_only(part, [&](std::size_t i) {
           const Vec<D>& x = Model::position_of(r, i);
-          return std::any_of(theirs.begin(), theirs.end(),
-                             [&](const Block& k) { return k.distance_to_placements(x) <= k.halo; });
+          return std::any_of(theirs.begin(), theirs.end(), [&](const Block& k) { return k.fixes(x); });
         });
         std::vector<double> data;
         Model::append_data(part, data);
@@ -313,7 +309,7 @@ class BlockFront {
       const Result& r = results_[static_cast<std::size_t>(nb)];
       for (std::size_t i = 0; i < Model::size(r); ++i) {
         const Vec<D>& x = Model::position_of(r, i);
-        if (block.distance_to_placements(x) > block.halo) continue;
+        if (!block.fixes(x)) continue;
         block.fixed_drafts.push_back(Model::draft_of(r, i));
         block.fixed_positions.push_back(x);
       }

@@ -65,6 +65,15 @@ struct FrontBlock {
       if (open_side[static_cast<std::size_t>(s)]) d = std::min(d, distance_to_box(side_region(s), p));
     return d;
   }
+  /// Whether a particle centred at p is within `halo` of where new centres may lie: one the
+  /// block grows against. Most particles of its neighbours are farther than the halo from its
+  /// box grown by its reach (which holds every side region): ruled out before the sides.
+  bool fixes(const Vec<D>& p) const {
+    Aabb<D> reachable = box;
+    reachable.lo.array() -= reach;
+    reachable.hi.array() += reach;
+    return distance_to_box(reachable, p) <= halo && distance_to_placements(p) <= halo;
+  }
 };
 
 }  // namespace fp
