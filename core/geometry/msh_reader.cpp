@@ -203,6 +203,21 @@ void read_entities(Cursor& c, Raw& r) {
   }
 }
 
+// Version 4.1's header of $Nodes and $Elements: the numbers of blocks and of items (the
+// smallest and largest tags are read past), each checked against the bytes left (an item takes
+// at least `binary_bytes` or `text_bytes`; a block header 20 or 8).
+std::pair<std::uint64_t, std::uint64_t> read_v4_header(Cursor& c, const std::string& item, std::size_t binary_bytes,
+                                                      std::size_t text_bytes) {
+  if (c.binary()) c.to_next_line();
+  const std::uint64_t blocks = c.size(("the number of " + item + " blocks").c_str());
+  const std::uint64_t total = c.size(("the number of " + item + "s").c_str());
+  c.size(("the smallest " + item + " tag").c_str());
+  c.size(("the largest " + item + " tag").c_str());
+  c.check_room(total, c.binary() ? binary_bytes : text_bytes, (item + "s").c_str());
+  c.check_room(blocks, c.binary() ? 20 : 8, (item + " blocks").c_str());
+  return {blocks, total};
+}
+
 void add_node(Cursor& c, Raw& r, std::uint64_t tag, const Vec3& x) {
   if (!x.allFinite()) c.fail("node " + std::to_string(tag) + " has a coordinate that is not finite");
   r.node_tags.push_back(tag);
@@ -233,13 +248,7 @@ void read_nodes(Cursor& c, Raw& r) {
     }
     return;
   }
-  if (bin) c.to_next_line();
-  const std::uint64_t blocks = c.size("the number of node blocks");
-  const std::uint64_t total = c.size("the number of nodes");
-  c.size("the smallest node tag");
-  c.size("the largest node tag");
-  c.check_room(total, bin ? 8 + 24 : 8, "nodes");
-  c.check_room(blocks, bin ? 20 : 8, "node blocks");
+  const auto [blocks, total] = read_v4_header(c, "node", 8 + 24, 8);
   r.nodes.reserve(total);
   for (std::uint64_t b = 0; b < blocks; ++b) {
     const long long dim = c.small("a node block's dimension");
@@ -337,13 +346,7 @@ void read_elements(Cursor& c, Raw& r) {
     }
     return;
   }
-  if (bin) c.to_next_line();
-  const std::uint64_t blocks = c.size("the number of element blocks");
-  const std::uint64_t total = c.size("the number of elements");
-  c.size("the smallest element tag");
-  c.size("the largest element tag");
-  c.check_room(total, bin ? 16 : 4, "elements");
-  c.check_room(blocks, bin ? 20 : 8, "element blocks");
+  const auto [blocks, total] = read_v4_header(c, "element", 16, 4);
   std::uint64_t seen = 0;
   for (std::uint64_t b = 0; b < blocks; ++b) {
     const long long dim = c.small("an element block's dimension");
