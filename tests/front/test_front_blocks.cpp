@@ -48,8 +48,11 @@ TEST(BlockLayout, TilesTheDomainAndOrdersEveryPairOfNeighbours) {
       const Aabb<3> box = L.box(b);
       const Vec3 s = box.size();
       volume += s.prod();
-      for (int a = 0; a < 3; ++a)
-        if (L.blocks_on_axis(a) > 1) EXPECT_GE(s[a], BlockLayout<3>::kMinEdge * r_max * (1 - 1e-12));
+      for (int a = 0; a < 3; ++a) {
+        if (L.blocks_on_axis(a) > 1) {
+          EXPECT_GE(s[a], BlockLayout<3>::kMinEdge * r_max * (1 - 1e-12));
+        }
+      }
       EXPECT_EQ(L.index(L.coords(b)), b);
       for (const int n : L.neighbours(b)) {
         EXPECT_NE(L.rank(n), L.rank(b)) << "neighbours " << b << " and " << n << " would grow at once";
