@@ -41,16 +41,9 @@ RunRecord start_run_record(const Scene& scene, const Container<D>& container, st
 
 /// The advancing front's counters, in the run record's order (both fronts fill FrontCounters).
 inline std::vector<std::pair<std::string, std::uint64_t>> front_counter_entries(const FrontCounters& c) {
-  return {{"front_picks", c.front_picks},         {"front_removals", c.front_removals},
-          {"pairs_considered", c.pairs_considered}, {"pairs_pruned", c.pairs_pruned},
-          {"solves", c.solves},                   {"candidates", c.candidates},
-          {"rejected_overlap", c.rejected_overlap}, {"rejected_container", c.rejected_container},
-          {"rejected_off_face", c.rejected_off_face}, {"rejected_block", c.rejected_block},
-          {"wall_bodies", c.wall_bodies},         {"radii_drawn", c.radii_drawn},
-          {"radii_unplaced", c.radii_unplaced},   {"max_neighbours", c.max_neighbours},
-          {"voids_reopened", c.voids_reopened},   {"voids_seeded", c.voids_seeded},
-          {"two_contact_placements", c.two_contact_placements}, {"contact_bodies_capped", c.contact_bodies_capped},
-          {"blocks", c.blocks},                   {"trimmed", c.trimmed}};
+  std::vector<std::pair<std::string, std::uint64_t>> out;
+  for (const FrontCounters::Field& f : FrontCounters::kFields) out.emplace_back(f.name, c.*f.member);
+  return out;
 }
 
 /// One MPI rank's work in a line (run record `info` and summary): what it grew, against how

@@ -190,7 +190,7 @@ class BlockFront {
     for (const int b : mine) {
       const Result& r = results_[static_cast<std::size_t>(b)];
       std::vector<double> data{r.stop == StopReason::TimeLimit ? 1.0 : 0.0, static_cast<double>(r.grid_bytes)};
-      for (const auto field : FrontCounters::kFields) data.push_back(static_cast<double>(r.counters.*field));
+      for (const auto& f : FrontCounters::kFields) data.push_back(static_cast<double>(r.counters.*f.member));
       Model::append_data(r, data);
       own.emplace_back(b, std::move(data));
     }
@@ -203,7 +203,7 @@ class BlockFront {
         timed_out |= data[0] != 0.0;
         r.grid_bytes = static_cast<std::size_t>(data[1]);
         std::size_t k = 2;
-        for (const auto field : FrontCounters::kFields) r.counters.*field = static_cast<std::uint64_t>(data[k++]);
+        for (const auto& f : FrontCounters::kFields) r.counters.*f.member = static_cast<std::uint64_t>(data[k++]);
         Model::add_data(r, data.data() + kHead, data.size() - kHead);
       }
       results_[static_cast<std::size_t>(b)] = std::move(r);

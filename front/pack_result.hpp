@@ -35,20 +35,38 @@ struct FrontCounters {
   std::uint64_t blocks = 0;               ///< threads: blocks the container was cut into (0: one front)
   std::uint64_t trimmed = 0;              ///< threads: particles placed, then dropped to honour a count or fraction stop
 
-  /// Every counter, in declaration order (adding, sending and listing them all alike).
-  static constexpr std::uint64_t FrontCounters::*kFields[] = {
-      &FrontCounters::front_picks, &FrontCounters::front_removals, &FrontCounters::pairs_considered,
-      &FrontCounters::pairs_pruned, &FrontCounters::solves, &FrontCounters::candidates,
-      &FrontCounters::rejected_container, &FrontCounters::rejected_overlap, &FrontCounters::rejected_off_face,
-      &FrontCounters::rejected_block, &FrontCounters::wall_bodies, &FrontCounters::radii_drawn,
-      &FrontCounters::radii_unplaced, &FrontCounters::max_neighbours, &FrontCounters::voids_reopened,
-      &FrontCounters::voids_seeded, &FrontCounters::two_contact_placements, &FrontCounters::contact_bodies_capped,
-      &FrontCounters::blocks, &FrontCounters::trimmed};
+  /// Every counter with its name in the run record, in the record's order (adding, sending and
+  /// listing them all alike).
+  struct Field {
+    const char* name;
+    std::uint64_t FrontCounters::*member;
+  };
+  static constexpr Field kFields[] = {
+      {"front_picks", &FrontCounters::front_picks},
+      {"front_removals", &FrontCounters::front_removals},
+      {"pairs_considered", &FrontCounters::pairs_considered},
+      {"pairs_pruned", &FrontCounters::pairs_pruned},
+      {"solves", &FrontCounters::solves},
+      {"candidates", &FrontCounters::candidates},
+      {"rejected_overlap", &FrontCounters::rejected_overlap},
+      {"rejected_container", &FrontCounters::rejected_container},
+      {"rejected_off_face", &FrontCounters::rejected_off_face},
+      {"rejected_block", &FrontCounters::rejected_block},
+      {"wall_bodies", &FrontCounters::wall_bodies},
+      {"radii_drawn", &FrontCounters::radii_drawn},
+      {"radii_unplaced", &FrontCounters::radii_unplaced},
+      {"max_neighbours", &FrontCounters::max_neighbours},
+      {"voids_reopened", &FrontCounters::voids_reopened},
+      {"voids_seeded", &FrontCounters::voids_seeded},
+      {"two_contact_placements", &FrontCounters::two_contact_placements},
+      {"contact_bodies_capped", &FrontCounters::contact_bodies_capped},
+      {"blocks", &FrontCounters::blocks},
+      {"trimmed", &FrontCounters::trimmed}};
 
   /// The counters of two fronts run side by side (the blocks of front/block_front.hpp); the
   /// largest |V| is the larger one.
   FrontCounters& operator+=(const FrontCounters& o) {
-    for (const auto field : kFields) this->*field += o.*field;
+    for (const Field& f : kFields) this->*f.member += o.*f.member;
     max_neighbours = std::max(max_neighbours - o.max_neighbours, o.max_neighbours);
     return *this;
   }
