@@ -86,10 +86,27 @@ int run(int argc, char** argv) {
 
   // CLI11 would answer "A subcommand is required" to a mistyped command.
   const std::string command = argc > 1 ? argv[1] : "";
-  if (!command.empty() && command[0] != '-' && command != "pack" && command != "validate" && command != "analyze") {
-    std::cerr << "frontpack: error: unknown command '" << command << "' (commands: pack, validate, analyze; see frontpack --help)\n";
+  if (!command.empty() && command[0] != '-' && command != "pack" && command != "densify" && command != "validate" &&
+      command != "analyze") {
+    std::cerr << "frontpack: error: unknown command '" << command
+              << "' (commands: pack, densify, validate, analyze; see frontpack --help)\n";
     return 2;
   }
+  fp::PackCommandOptions densify;
+  CLI::App* densify_cmd = app.add_subcommand(
+      "densify", "fill the voids of a packing of spheres (disks) with more of the scene's spheres and write the outputs");
+  densify_cmd->add_option("packing", densify.input_path, "packing file (vtu, yade, lammps, csv or json)")->required();
+  densify_cmd->add_option("--scene", densify.scene_path, "the scene it fills: container, radii, `densify:` options")->required();
+  densify_cmd->add_option("--input-format", densify.input_format, "format of PACKING (default: from its extension)");
+  densify_cmd->add_option("-o,--output", densify.output_path,
+                          "write the packing to PATH (replaces the scene's output list; format from --format or the extension)");
+  densify_cmd->add_option("--format", densify.format, "format of -o: vtu | yade | lammps | csv | json");
+  densify_cmd->add_option("--seed", seed_text, "override the scene's 64-bit seed (decimal)")->check(decimal_seed);
+  densify_cmd->add_option("-j,--threads", densify.threads, "threads of the validation and analysis (0: every hardware thread)")
+      ->check(CLI::Range(0, 4096));
+  densify_cmd->add_option("--record", densify.record_path, "also write the JSON run record (without particles) to PATH");
+  densify_cmd->add_flag("-q,--quiet", densify.quiet, "no summary on stdout");
+
   fp::ValidateCommandOptions check;
   CLI::App* validate_cmd = app.add_subcommand(
       "validate", "check a packing file against its scene: no overlap, every particle inside, the radii");
@@ -132,6 +149,14 @@ int run(int argc, char** argv) {
     return (code == 0) ? 0 : 2;
   }
   if (validate_cmd->parsed()) return fp::run_validate_command(check);
+  if (densify_cmd->parsed()) {
+    if (!seed_text.empty()) {
+      std::uint64_t seed = 0;
+      std::from_chars(seed_text.data(), seed_text.data() + seed_text.size(), seed, 10);  // checked above
+      densify.seed = seed;
+    }
+    return fp::run_pack_command(densify);
+  }
   if (analyze_cmd->parsed()) return fp::run_analyze_command(an);
   if (pack_cmd->parsed()) {
     if (!seed_text.empty()) {

@@ -64,18 +64,19 @@ void apply_overrides(Scene& scene, const PackCommandOptions& o) {
         writes.push_back({side, where, "the side file of output '" + out.path + "'"});
   }
   if (!o.record_path.empty()) writes.push_back({o.record_path, "option --record", "run record"});
-  check_output_paths(writes, scene_reads(scene, "argument SCENE"));
+  std::vector<NamedPath> reads = scene_reads(scene, o.input_path.empty() ? "argument SCENE" : "option --scene");
+  if (!o.input_path.empty()) reads.push_back({o.input_path, "argument PACKING", "packing file"});
+  check_output_paths(writes, reads);
 }
 
-/// One run for every kind of particle (`Kind`: SpherePack or ShapePack): pack, check (the one
-/// verdict), record, write every output or none, summarise; exit 3 when the check fails.
-template <int D, class Kind>
-int run(const Scene& scene, const PackCommandOptions& o) {
+/// One run for every kind of particle (`Kind`: SpherePack or ShapePack): pack (`make(progress)`,
+/// Kind::pack by default), check (the one verdict), record, write every output or none,
+/// summarise; exit 3 when the check fails.
+template <int D, class Kind, class Make>
+int run(const Scene& scene, const PackCommandOptions& o, Make&& make) {
   const Container<D>& container = *scene.container<D>();
   const bool root = !o.exchange || o.exchange->process() == 0;
-  const typename Kind::Result res = pack_with_progress(o.progress && root, [&](const ProgressFn& progress) {
-    return Kind::pack(scene, progress, o.exchange);
-  });
+  const typename Kind::Result res = pack_with_progress(o.progress && root, make);
   if (!root) return 0;  // rank 0 holds the packing: it checks, writes and summarises
   const auto& P = res.packing;
   const double n = static_cast<double>(P.size());
@@ -110,7 +111,7 @@ int run(const Scene& scene, const PackCommandOptions& o) {
       {"contacts", v.contacts}, {"wall_contacts", v.wall_contacts}, {"pairs_checked", v.pairs_checked}};
   rec.counters.insert(rec.counters.end(), common.begin(), common.end());
   rec.counters.insert(rec.counters.end(), check.counters.begin(), check.counters.end());
-  rec.info = {{"stop_reason", to_string(res.stop)}, {"validation", v.ok ? "ok" : "FAILED"}};
+  rec.info = {{"stop_reason", Kind::stop_text(res)}, {"validation", v.ok ? "ok" : "FAILED"}};
   rec.info.insert(rec.info.end(), check.info.begin(), check.info.end());
   for (std::size_t r = 0; r < res.ranks.size(); ++r) rec.info.emplace_back("rank_" + std::to_string(r), rank_work_text(res.ranks[r]));
   rec.analysis_json = check.analysis_json;
@@ -122,7 +123,7 @@ int run(const Scene& scene, const PackCommandOptions& o) {
   if (!o.quiet) {
     print_run_header<D>(scene, container);
     std::printf("  particles      %s\n", rec.distribution_description.c_str());
-    std::printf("  placed         %zu   (stop: %s)\n", P.size(), to_string(res.stop));
+    std::printf("  placed         %zu   (stop: %s)\n", P.size(), Kind::stop_text(res).c_str());
     for (std::size_t r = 0; r < res.ranks.size(); ++r)
       std::printf("  rank %-9zu %s\n", r, rank_work_text(res.ranks[r]).c_str());
     std::printf("%s", check.summary_lines.c_str());
@@ -138,13 +139,31 @@ int run(const Scene& scene, const PackCommandOptions& o) {
   return 0;
 }
 
+template <int D, class Kind>
+int run(const Scene& scene, const PackCommandOptions& o) {
+  return run<D, Kind>(scene, o, [&](const ProgressFn& progress) { return Kind::pack(scene, progress, o.exchange); });
+}
+
+/// `frontpack densify`: the packing read, filled by the scene's void filling.
+template <int D>
+int run_densify(const Scene& scene, Packing<D>& given, const PackCommandOptions& o) {
+  return run<D, SpherePack<D>>(scene, o, [&](const ProgressFn&) { return SpherePack<D>::densify(scene, std::move(given)); });
+}
+
 }  // namespace
 
 int run_pack_command(const PackCommandOptions& o) {
   Scene scene;
+  PackingInput given;  // densify: the packing to fill
+  const bool densify = !o.input_path.empty();
   try {  // reading and checking what was given: any failure is bad input
-    const Activity doing("reading scene '" + o.scene_path + "'");
-    scene = load_scene(o.scene_path);
+    const Activity doing(densify ? "reading packing '" + o.input_path + "'" : "reading scene '" + o.scene_path + "'");
+    if (densify) {
+      given = read_packing_input(o.input_path, o.input_format, o.scene_path);  // refuses a scene of shapes
+      scene = std::move(*given.scene);
+    } else {
+      scene = load_scene(o.scene_path);
+    }
     apply_overrides(scene, o);
     // Every shape-specific input problem (family, parameters, output formats) and what the run
     // asks of the machine, before any work.
@@ -154,7 +173,8 @@ int run_pack_command(const PackCommandOptions& o) {
     return report_failure(2);
   }
   try {
-    const Activity doing("packing scene '" + o.scene_path + "'");
+    const Activity doing(densify ? "filling the voids of '" + o.input_path + "'" : "packing scene '" + o.scene_path + "'");
+    if (densify) return scene.dimension == 2 ? run_densify<2>(scene, given.packing2, o) : run_densify<3>(scene, given.packing3, o);
     if (!scene.particle_templates.empty())  // non-spherical particles: the general front
       return scene.dimension == 2 ? run<2, ShapePack<2>>(scene, o) : run<3, ShapePack<3>>(scene, o);
     return scene.dimension == 2 ? run<2, SpherePack<2>>(scene, o) : run<3, SpherePack<3>>(scene, o);

@@ -1,5 +1,6 @@
 #pragma once
-// `frontpack pack`: scene -> packing -> metrics -> validation -> outputs -> summary.
+// `frontpack pack`: scene -> packing -> metrics -> validation -> outputs -> summary; and
+// `frontpack densify`: packing file + scene -> void filling -> the same checks and outputs.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -10,6 +11,8 @@ class BlockExchange;
 
 struct PackCommandOptions {
   std::string scene_path;
+  std::string input_path;              ///< densify: the packing to fill (else the scene is packed)
+  std::string input_format;            ///< densify: its format (default: from its extension)
   std::string output_path;             ///< -o: replaces the scene's outputs
   std::string format;                  ///< --format for -o
   std::string record_path;             ///< --record: JSON run record without particles

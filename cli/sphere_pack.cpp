@@ -1,17 +1,54 @@
 #include "cli/sphere_pack.hpp"
 
+#include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include "core/metrics/packing_analysis.hpp"
 #include "core/metrics/validate.hpp"
 #include "core/system/parallel_parts.hpp"
+#include "front/block_exchange.hpp"
 #include "front/pack.hpp"
 
 namespace fp {
+namespace {
+
+/// The scene's void filling on `run.packing`: what it adds is checked with the rest, with the
+/// overlap it allows as the tolerance.
+template <int D>
+void fill(const Scene& scene, const DensifyOptions& options, SphereRun<D>& run) {
+  run.densified = fill_voids<D>(run.packing, *scene.container<D>(), *scene.radii, options, scene.seed, run.contact_tolerance);
+  run.seconds += run.densified->seconds;
+  run.solid_measure = run.densified->solid_after;
+  run.contact_tolerance = std::max(run.contact_tolerance, options.overlap);
+}
+
+}  // namespace
 
 template <int D>
 typename SpherePack<D>::Result SpherePack<D>::pack(const Scene& scene, const ProgressFn& progress, BlockExchange* exchange) {
-  return fp::pack<D>(scene, progress, exchange);
+  Result run;
+  static_cast<PackResult<D>&>(run) = fp::pack<D>(scene, progress, exchange);
+  const bool root = !exchange || exchange->process() == 0;  // the others hold no packing
+  if (scene.densify && root) fill<D>(scene, *scene.densify, run);
+  return run;
+}
+
+template <int D>
+typename SpherePack<D>::Result SpherePack<D>::densify(const Scene& scene, Packing<D> packing) {
+  Result run;
+  run.given = true;
+  run.packing = std::move(packing);
+  run.contact_tolerance = scene.packer.contact_tolerance;
+  fill<D>(scene, scene.densify.value_or(DensifyOptions{}), run);
+  return run;
+}
+
+template <int D>
+std::string SpherePack<D>::stop_text(const Result& run) {
+  std::string s = run.given ? "given" : to_string(run.stop);
+  if (run.densified) s += std::string("; void filling: ") + to_string(run.densified->stop);
+  return s;
 }
 
 template <int D>
@@ -23,12 +60,48 @@ PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth
   AnalysisOptions options;
   options.contact_tolerance = res.contact_tolerance;
   options.threads = thread_count(scene.packer.threads);
+  // Radii the voids gave (paper 000) are asked to lie in the range only; their law is reported.
+  const bool fitted = res.densified && scene.densify && scene.densify->radii == VoidRadii::Fit;
+  options.radii_alpha = fitted ? 0.0 : kRadiiAlpha;
   PackCheck c = depth == CheckDepth::Analysis
                     ? pack_check_of(analyze_packing<D>(res.packing, &container, scene.radii.get(), options))
                     : pack_check_of(validate_packing<D>(res.packing, container, scene.radii.get(), res.contact_tolerance,
-                                                        kRadiiAlpha, nullptr, options.threads),
+                                                        options.radii_alpha, nullptr, options.threads),
                                     res.solid_measure / container.measure());
   c.counters.emplace_back("grid_bytes", res.grid_bytes);
+  if (const auto& v = res.densified) {
+    const double measure = container.measure();
+    char line[320];
+    std::snprintf(line, sizeof line,
+                  "  void filling   +%zu spheres in %d rounds (stop: %s): volume fraction %.4f -> %.4f; radii %s; %.3f s "
+                  "(triangulations %.3f s)\n",
+                  v->added, v->rounds, to_string(v->stop), v->solid_before / measure, v->solid_after / measure,
+                  fitted ? "the voids' own" : (std::to_string(v->radii_unplaced) + " of " + std::to_string(v->radii_drawn) +
+                                               " drawn left unplaced").c_str(),
+                  v->seconds, v->triangulation_seconds);
+    c.summary_lines += line;
+    c.info.emplace_back("densify_stop", to_string(v->stop));
+    c.info.emplace_back("densify_radii", fitted ? "fit" : "distribution");
+    c.metrics.insert(c.metrics.end(), {{"densify_volume_fraction_before", v->solid_before / measure},
+                                       {"densify_seconds", v->seconds},
+                                       {"densify_triangulation_seconds", v->triangulation_seconds},
+                                       {"densify_max_overlap_over_r_min", v->max_overlap_over_r_min}});
+    c.counters.insert(c.counters.end(), {{"densify_given", res.given ? 1u : 0u},
+                                         {"densify_before", v->before},
+                                         {"densify_added", v->added},
+                                         {"densify_rounds", static_cast<std::uint64_t>(v->rounds)},
+                                         {"densify_voids", v->voids},
+                                         {"densify_voids_open", v->voids_open},
+                                         {"densify_mirrored", v->mirrored},
+                                         {"densify_positions_tried", v->positions_tried},
+                                         {"densify_rejected_overlap", v->rejected_overlap},
+                                         {"densify_rejected_container", v->rejected_container},
+                                         {"densify_rejected_contacts", v->rejected_contacts},
+                                         {"densify_radii_drawn", v->radii_drawn},
+                                         {"densify_radii_unplaced", v->radii_unplaced},
+                                         {"densify_radii_reduced", v->radii_reduced},
+                                         {"densify_radii_capped", v->radii_capped}});
+  }
   return c;
 }
 

@@ -1,19 +1,37 @@
 #pragma once
 // `frontpack pack` for a scene of spheres (disks): the advancing front over centres and radii,
-// then every figure of `frontpack analyze` (the independent validation included).
+// the void filling the scene may ask for (`densify:`), then every figure of `frontpack analyze`
+// (the independent validation included). `frontpack densify` runs the same stage on a packing
+// read from a file.
+#include <optional>
+#include <string>
+
 #include "cli/pack_check.hpp"
 #include "core/io/scene.hpp"
+#include "densify/void_filling.hpp"
 #include "front/pack_result.hpp"
 
 namespace fp {
 
 class BlockExchange;
 
+/// A packing of spheres and how it was made: by the front, or given (frontpack densify); then
+/// perhaps filled.
+template <int D>
+struct SphereRun : PackResult<D> {
+  bool given = false;                            ///< read from a file, not packed
+  std::optional<VoidFillingReport> densified;    ///< the void filling, when the scene asks for it
+};
+
 template <int D>
 struct SpherePack {
-  using Result = PackResult<D>;
+  using Result = SphereRun<D>;
   static Result pack(const Scene& scene, const ProgressFn& progress, BlockExchange* exchange);
+  /// `packing` (in the scene container's frame) filled by the scene's void filling (its
+  /// defaults when the scene has no `densify:`).
+  static Result densify(const Scene& scene, Packing<D> packing);
   static PackCheck check(const Scene& scene, const Result& result, CheckDepth depth);
+  static std::string stop_text(const Result& result);
 };
 
 }  // namespace fp

@@ -94,6 +94,29 @@ struct StopCriteria {
   // The front running empty always stops the run.
 };
 
+/// How a sphere filling a void gets its radius (densify/void_filling.hpp).
+enum class VoidRadii {
+  /// Drawn from the scene's distribution, `radius_pool` ahead: the largest pooled radius that
+  /// fits a void goes in, so at most the pool is left unplaced (the bias the radii test sees).
+  Distribution,
+  /// The void's own (paper 000, Sect. 2.1): the sphere touching its D + 1 bodies, kept when in the
+  /// distribution's [r_min, r_max] (r_max when larger, reduced to cancel an overlap in last
+  /// resort). Only the range is then asked of the radii; their law drifts small.
+  Fit
+};
+
+/// Void filling after the packer (`densify:`): spheres added into the voids of the Delaunay
+/// triangulation of the centres (paper 000, step 7b), largest void first, round after round.
+struct DensifyOptions {
+  VoidRadii radii = VoidRadii::Distribution;
+  int radius_pool = 0;    ///< Distribution: radii drawn ahead; 0: half the square root of the packing's count, at least 4
+  double overlap = 0.0;   ///< epsilon: overlap allowed between spheres, times the distribution's r_min (paper 000: delta_max = epsilon r_min)
+  int z_min = 0;          ///< contacts (walls count) a new sphere needs; 0: the dimension
+  int rounds = 0;         ///< triangulations at most; 0: until one adds nothing
+  std::optional<double> target_volume_fraction;  ///< phi0: stop once the packing reaches it (checked after every sphere)
+  std::optional<std::uint64_t> max_particles;    ///< N0: stop once the packing holds this many
+};
+
 /// Where a value was written in the scene file, so that errors found later (shape families are
 /// resolved in shapes/, above core/) still name the file, line and key (SceneError).
 struct SourceSpot {
@@ -162,6 +185,7 @@ struct Scene {
   std::vector<ParticleTemplateSpec> particle_templates;
   PackerOptions packer;
   StopCriteria stop;
+  std::optional<DensifyOptions> densify;  ///< void filling after the packer (spheres only)
   std::vector<OutputSpec> outputs;
   /// Every file the scene was read from (itself, a mesh): no output may replace them.
   std::vector<std::string> read_files;

@@ -673,6 +673,48 @@ void parse_stop(const Value& v, StopCriteria& s, std::map<std::string, SourceSpo
   if (auto x = m.find("time")) s.time_limit_seconds = x->positive();
 }
 
+void parse_densify(const Value& v, int dimension, bool shapes, DensifyOptions& d, std::map<std::string, SourceSpot>& spots) {
+  if (shapes) v.fail("void filling adds spheres: it needs a scene of spheres (disks), not of shapes");
+  spots["densify"] = v.spot();
+  if (v.node().IsNull()) return;  // `densify:` alone: every default
+  const Map m = v.map();
+  m.check_known({"radii", "radius_pool", "overlap", "z_min", "rounds", "volume_fraction", "particles"});
+  if (auto x = m.find("radii")) d.radii = x->choice({"distribution", "fit"}) == "fit" ? VoidRadii::Fit : VoidRadii::Distribution;
+  if (auto x = m.find("radius_pool")) {
+    const std::uint64_t n = x->unsigned_integer();
+    if (n > 1000000) x->fail("must be an integer from 0 (half the square root of the packing's count) to 1000000 (got " + x->node().Scalar() + ")");
+    d.radius_pool = static_cast<int>(n);
+  }
+  if (auto x = m.find("overlap")) {
+    const double e = x->number();
+    if (!(e >= 0 && e < 1)) x->fail("must be in [0, 1): the overlap allowed, times r_min (got " + x->node().Scalar() + ")");
+    d.overlap = e;
+  }
+  if (auto x = m.find("z_min")) {
+    const std::uint64_t z = x->unsigned_integer();
+    if (z < 1 || z > static_cast<std::uint64_t>(dimension + 1))
+      x->fail("must be an integer from 1 to " + std::to_string(dimension + 1) + " in " + std::to_string(dimension) +
+              "D (got " + x->node().Scalar() + ")");
+    d.z_min = static_cast<int>(z);
+  }
+  if (auto x = m.find("rounds")) {
+    const std::uint64_t n = x->unsigned_integer();
+    if (n > 1000000) x->fail("must be an integer from 0 (until a round adds nothing) to 1000000 (got " + x->node().Scalar() + ")");
+    d.rounds = static_cast<int>(n);
+  }
+  if (auto x = m.find("volume_fraction")) {
+    const double phi = x->number();
+    if (!(phi > 0 && phi < 1)) x->fail("must be in (0, 1) (got " + x->node().Scalar() + ")");
+    d.target_volume_fraction = phi;
+  }
+  if (auto x = m.find("particles")) {
+    const std::uint64_t n = x->unsigned_integer(true);
+    if (n == 0) x->fail("must be a positive integer (got " + x->node().Scalar() + ")");
+    d.max_particles = n;
+    spots["densify.particles"] = x->spot();
+  }
+}
+
 std::vector<OutputSpec> parse_outputs(const Value& v) {
   if (!v.node().IsSequence()) v.fail("expected a list of {format, path} entries, got " + shown(v.node()));
   std::vector<OutputSpec> out;
@@ -952,7 +994,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
   ctx.read_files = &scene.read_files;
   try {
     const Map root(ctx, doc, "", doc.Mark().is_null() ? start : doc.Mark());
-    root.check_known({"dimension", "seed", "container", "particles", "packer", "stop", "output"});
+    root.check_known({"dimension", "seed", "container", "particles", "packer", "stop", "densify", "output"});
     const Value dim = root.get("dimension", "2 or 3");
     const std::uint64_t d = dim.unsigned_integer();
     if (d != 2 && d != 3) dim.fail("must be 2 or 3 (got " + dim.node().Scalar() + ")");
@@ -961,6 +1003,8 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
     if (scene.dimension == 3) parse_body<3>(root, scene, ctx);
     else parse_body<2>(root, scene, ctx);
     if (auto s = root.find("stop")) parse_stop(*s, scene.stop, scene.spots);
+    if (auto d = root.find("densify"))
+      parse_densify(*d, scene.dimension, !scene.particle_templates.empty(), scene.densify.emplace(), scene.spots);
     if (auto o = root.find("output")) scene.outputs = parse_outputs(*o);
   } catch (const YAML::Exception& e) {  // not expected: every access is checked first
     ctx.fail(e.mark, "", e.msg);

@@ -144,7 +144,7 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
   ContactNetwork<D> network;
   if (options.validate)
     timed_step(t, "validate", [&] {
-      a.validation = validate_packing(packing, *container, dist_or_null, options.contact_tolerance, kRadiiAlpha,
+      a.validation = validate_packing(packing, *container, dist_or_null, options.contact_tolerance, options.radii_alpha,
                                       &network, threads);
     });
   else

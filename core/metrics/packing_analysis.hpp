@@ -43,6 +43,7 @@ struct AnalysisOptions {
   RdfOptions rdf;
   QmcOptions qmc;                       ///< container and core VF
   bool validate = true;                 ///< also run validate_packing (overlap tolerance = contact_tolerance)
+  double radii_alpha = kRadiiAlpha;     ///< the validation's level for the radii test (0: their range only)
   int threads = 1;                      ///< threads sharing the work; the figures are the same for every count
 };
 

@@ -1,0 +1,431 @@
+#include "densify/void_filling.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <span>
+#include <vector>
+
+#include "contact/sphere_contact_solver.hpp"
+#include "contact/tangent_sphere.hpp"
+#include "core/geometry/delaunay_cgal.hpp"
+#include "core/geometry/neighbour_grid.hpp"
+#include "core/geometry/tet_void.hpp"
+#include "core/sampling/rng.hpp"
+
+namespace fp {
+
+const char* to_string(VoidFillingStop stop) {
+  switch (stop) {
+    case VoidFillingStop::NoVoidFits: return "no void fits a sphere";
+    case VoidFillingStop::Rounds: return "round limit";
+    case VoidFillingStop::VolumeFraction: return "volume fraction";
+    case VoidFillingStop::ParticleCount: return "particle count";
+  }
+  return "?";
+}
+
+namespace {
+
+/// The stage's own random stream: its draws do not depend on how many the packer made.
+constexpr std::uint64_t kStream = 0x766f696466696c6cULL;  // "voidfill"
+/// Distribution: the pooled radii tried in one void, largest first.
+constexpr int kRadiiPerVoid = 3;
+/// Mirrors are moved off their exact place by this fraction of their distance (see below).
+constexpr double kMirrorJitter = 1e-6;
+/// A void's room is compared with r_min within this relative slack (rounding of the fit).
+constexpr double kRoomSlack = 1e-9;
+
+template <int D>
+double ball_measure(double r) {
+  if constexpr (D == 3) return 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  else return std::numbers::pi * r * r;
+}
+
+/// A centre near the boundary reflected across a wall: a vertex of the triangulation that stands
+/// for the wall.
+struct Mirror {
+  int sphere;  ///< the centre reflected
+  int wall;    ///< index into the round's walls
+};
+
+template <int D>
+class VoidFiller {
+ public:
+  VoidFiller(Packing<D>& packing, const Container<D>& container, const RadiusDistribution& dist, const DensifyOptions& o,
+             std::uint64_t seed, double tol)
+      : P_(packing), C_(container), dist_(dist), o_(o), tol_(tol), rng_(seed ^ kStream),
+        r_min_(dist.r_min()), r_max_(dist.r_max()), allowance_(o.overlap * dist.r_min()),
+        z_min_(o.z_min > 0 ? o.z_min : D), measure_(container.measure()),
+        grid_(container.bounds(), std::min(r_min_, smallest_radius(packing)), std::max(r_max_, largest_radius(packing))) {
+    for (std::size_t i = 0; i < P_.size(); ++i) {
+      grid_.insert(static_cast<int>(i), P_.centers[i], P_.radii[i]);
+      solid_ += ball_measure<D>(P_.radii[i]);
+    }
+    rep_.before = P_.size();
+    rep_.solid_before = solid_;
+    if (o_.radii == VoidRadii::Distribution) {
+      // Auto: the unplaced draws shift the radii's empirical CDF by at most pool / N, kept at
+      // half of 1 / sqrt(N), a third of the K-S test's critical 1.36 / sqrt(N) at 5 %.
+      const std::size_t pool = o_.radius_pool > 0 ? static_cast<std::size_t>(o_.radius_pool)
+                                                  : std::max<std::size_t>(4, static_cast<std::size_t>(std::ceil(
+                                                                                 0.5 * std::sqrt(static_cast<double>(P_.size())))));
+      while (pool_.size() < pool) draw();
+    }
+  }
+
+  VoidFillingReport run() {
+    const auto start = std::chrono::steady_clock::now();
+    for (;;) {
+      if (reached()) break;
+      if (o_.rounds > 0 && rep_.rounds >= o_.rounds) {
+        rep_.stop = VoidFillingStop::Rounds;
+        break;
+      }
+      if (fill_round() == 0 && !reached()) {
+        rep_.stop = VoidFillingStop::NoVoidFits;
+        break;
+      }
+    }
+    rep_.added = P_.size() - rep_.before;
+    rep_.solid_after = solid_;
+    rep_.radii_unplaced = pool_.size();
+    rep_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return rep_;
+  }
+
+ private:
+  static double smallest_radius(const Packing<D>& p) {
+    double r = std::numeric_limits<double>::infinity();
+    for (double x : p.radii)
+      if (x > 0) r = std::min(r, x);
+    return r;
+  }
+  static double largest_radius(const Packing<D>& p) {
+    double r = 0;
+    for (double x : p.radii) r = std::max(r, x);
+    return r;
+  }
+
+  void draw() {
+    const double r = dist_.sample(rng_);
+    pool_.insert(std::upper_bound(pool_.begin(), pool_.end(), r, std::greater<>()), r);  // largest first
+    ++rep_.radii_drawn;
+  }
+
+  /// phi0 or N0 reached (recorded as the stop).
+  bool reached() {
+    if (o_.target_volume_fraction && solid_ / measure_ >= *o_.target_volume_fraction) {
+      rep_.stop = VoidFillingStop::VolumeFraction;
+      return true;
+    }
+    if (o_.max_particles && P_.size() >= *o_.max_particles) {
+      rep_.stop = VoidFillingStop::ParticleCount;
+      return true;
+    }
+    return false;
+  }
+
+  /// The wall's distance to c (inside: positive) and c's mirror across it; false for a wall that
+  /// has no mirror (a vertex, a centre on a curved wall's axis).
+  static bool reflect(const Wall<D>& w, const Vec<D>& c, double& distance, Vec<D>& mirror, TangentBody<D>& plane) {
+    switch (w.kind) {
+      case WallKind::Plane:
+        distance = w.normal.dot(c - w.point);
+        mirror = c - 2.0 * distance * w.normal;
+        plane = TangentBody<D>::wall(w.point, w.normal);
+        return true;
+      case WallKind::Sphere:
+      case WallKind::Cylinder: {
+        Vec<D> radial = c - w.point;
+        if (w.kind == WallKind::Cylinder) radial -= radial.dot(w.axis) * w.axis;
+        const double d = radial.norm();
+        if (!(d > 0)) return false;
+        const Vec<D> u = radial / d;
+        distance = w.radius - d;
+        mirror = c + 2.0 * distance * u;
+        plane = TangentBody<D>::wall(c + distance * u, -u);  // the tangent plane at c's foot
+        return true;
+      }
+      case WallKind::Vertex: return false;
+    }
+    return false;
+  }
+
+  /// The centres, then the mirrors of those near the walls (at most D walls each, nearest first).
+  void triangulation_points(std::vector<Vec<D>>& points, std::vector<double>& radii) {
+    points = P_.centers;
+    radii = P_.radii;
+    walls_.clear();
+    planes_.clear();
+    mirrors_.clear();
+    std::vector<Wall<D>> near;
+    struct Near { double distance; Vec<D> mirror; TangentBody<D> plane; std::size_t k; };
+    std::vector<Near> found;
+    for (std::size_t i = 0; i < P_.size(); ++i) {
+      const Vec<D>& c = P_.centers[i];
+      const double reach = P_.radii[i] + 2.0 * r_max_;
+      if (-C_.signed_distance(c) > reach) continue;
+      near.clear();
+      C_.walls_near(c, reach, near);
+      found.clear();
+      for (std::size_t k = 0; k < near.size(); ++k) {
+        Near n{};
+        n.k = k;
+        if (!reflect(near[k], c, n.distance, n.mirror, n.plane) || n.distance > reach) continue;
+        // A centre and its mirror, with another pair, lie on one circle: degenerate for the
+        // triangulation's exact predicates, which then fall back to slow exact arithmetic. The
+        // mirrors are only where voids are looked for (the walls themselves are what new spheres
+        // touch), so each is moved off its exact place by a part in 10^6 of its distance.
+        n.mirror += (n.mirror - c) * kMirrorJitter * (1.0 + static_cast<double>((i * 7 + k) % 13) / 13.0);
+        found.push_back(n);
+      }
+      std::stable_sort(found.begin(), found.end(), [](const Near& a, const Near& b) { return a.distance < b.distance; });
+      int kept = 0;
+      const std::size_t first = points.size();
+      for (const Near& n : found) {
+        if (kept == D) break;
+        bool again = false;  // coplanar facets of a mesh give the same mirror
+        for (std::size_t q = first; q < points.size() && !again; ++q)
+          again = (points[q] - n.mirror).norm() <= 1e-9 * P_.radii[i];
+        if (again) continue;
+        mirrors_.push_back({static_cast<int>(i), static_cast<int>(walls_.size())});
+        walls_.push_back(near[n.k]);
+        planes_.push_back(n.plane);
+        points.push_back(n.mirror);
+        radii.push_back(P_.radii[i]);
+        ++kept;
+      }
+    }
+    rep_.mirrored += mirrors_.size();
+  }
+
+  /// One triangulation and a pass over its voids, largest first; returns the spheres added.
+  std::size_t fill_round() {
+    const std::size_t before = P_.size();
+    std::vector<Vec<D>> points;
+    std::vector<double> radii;
+    triangulation_points(points, radii);
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::vector<std::array<std::uint32_t, D + 1>> simplices = delaunay_simplices<D>(points);
+    rep_.triangulation_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ++rep_.rounds;
+    const std::size_t n_real = before;
+
+    struct Void { double measure; std::uint32_t simplex; };
+    std::vector<Void> voids;
+    voids.reserve(simplices.size());
+    for (std::uint32_t s = 0; s < simplices.size(); ++s) {
+      std::array<Vec<D>, D + 1> c;
+      std::array<double, D + 1> r;
+      bool real = false;
+      for (int k = 0; k <= D; ++k) {
+        const std::uint32_t v = simplices[s][static_cast<std::size_t>(k)];
+        c[static_cast<std::size_t>(k)] = points[v];
+        r[static_cast<std::size_t>(k)] = radii[v];
+        real |= v < n_real;
+      }
+      if (!real) continue;
+      const double m = simplex_void_measure<D>(c, r);
+      if (std::isfinite(m)) voids.push_back({m, s});
+    }
+    rep_.voids += voids.size();
+    std::sort(voids.begin(), voids.end(), [](const Void& a, const Void& b) {
+      return a.measure != b.measure ? a.measure > b.measure : a.simplex < b.simplex;
+    });
+    for (const Void& v : voids) {
+      fill(simplices[v.simplex], points, radii, n_real);
+      if (reached()) break;
+    }
+    return P_.size() - before;
+  }
+
+  /// Tries to put one sphere into the void of simplex `s`.
+  void fill(const std::array<std::uint32_t, D + 1>& s, const std::vector<Vec<D>>& points, const std::vector<double>& radii,
+            std::size_t n_real) {
+    // Its bodies: the spheres at its vertices, the walls of its mirror vertices (once each).
+    std::array<Body<D>, D + 1> bodies;
+    std::array<TangentBody<D>, D + 1> exact, estimate;
+    std::array<int, D + 1> wall_of;
+    int nb = 0, walls = 0;
+    Vec<D> centroid = Vec<D>::Zero();
+    for (int k = 0; k <= D; ++k) {
+      const std::uint32_t v = s[static_cast<std::size_t>(k)];
+      centroid += points[v] / (D + 1.0);
+      estimate[static_cast<std::size_t>(k)] = TangentBody<D>::sphere(points[v], radii[v]);
+      if (v < n_real) {
+        bodies[static_cast<std::size_t>(nb)] = Body<D>::sphere(points[v], radii[v], static_cast<int>(v));
+        exact[static_cast<std::size_t>(nb++)] = estimate[static_cast<std::size_t>(k)];
+        continue;
+      }
+      const int w = mirrors_[v - n_real].wall;
+      if (std::find(wall_of.begin(), wall_of.begin() + walls, w) != wall_of.begin() + walls) continue;
+      wall_of[static_cast<std::size_t>(walls++)] = w;
+      bodies[static_cast<std::size_t>(nb)] = Body<D>::of_wall(walls_[static_cast<std::size_t>(w)]);
+      exact[static_cast<std::size_t>(nb++)] = planes_[static_cast<std::size_t>(w)];
+    }
+    // The void's room: the sphere touching its D + 1 bodies (Eqs. 1-9), or, with fewer distinct
+    // bodies (two mirrors of one wall), the one touching the mirrors as spheres: an estimate.
+    const bool determined = nb == D + 1;
+    const TangentSpheres<D> fits = spheres_tangent_to<D>(determined ? exact : estimate, o_.radii == VoidRadii::Fit);
+    int best = -1;
+    for (int k = 0; k < fits.count; ++k)
+      if (best < 0 || (fits.at[static_cast<std::size_t>(k)].centre - centroid).squaredNorm() <
+                          (fits.at[static_cast<std::size_t>(best)].centre - centroid).squaredNorm())
+        best = k;
+    if (best < 0) return;
+    const TangentSphere<D> room = fits.at[static_cast<std::size_t>(best)];
+    if (room.radius < r_min_ * (1 - kRoomSlack)) return;
+    ++rep_.voids_open;
+
+    if (o_.radii == VoidRadii::Fit) {
+      if (determined && room.radius <= r_max_) {
+        double r = room.radius;
+        if (try_place(room.centre, r, true)) return;
+        // A curved wall stood as its tangent plane: that radius touching D of the bodies, the
+        // wall itself among them.
+        if (walls > 0) place_touching(bodies, nb, room.radius, room.centre, true);
+        return;
+      }
+      if (room.radius > r_max_) ++rep_.radii_capped;
+      place_touching(bodies, nb, std::min(room.radius, r_max_), room.centre, true);
+      return;
+    }
+    // Distribution: the largest pooled radii that the room can take.
+    int tried = 0;
+    double last = -1;
+    for (std::size_t p = 0; p < pool_.size() && tried < kRadiiPerVoid; ++p) {
+      const double r = pool_[p];
+      if (r > room.radius * (1 + kRoomSlack) || r == last) continue;
+      last = r;
+      ++tried;
+      if (place_touching(bodies, nb, r, room.centre, false)) {
+        pool_.erase(pool_.begin() + static_cast<std::ptrdiff_t>(p));
+        draw();
+        return;
+      }
+    }
+  }
+
+  /// Places a sphere of radius r touching D of the `nb` bodies, at the valid position nearest
+  /// `target`; in fit mode its radius may be reduced to cancel an overlap.
+  bool place_touching(const std::array<Body<D>, D + 1>& bodies, int nb, double r, const Vec<D>& target, bool may_reduce) {
+    if (nb < D) return false;
+    std::array<Placement<D>, 2 * (D + 1)> found;
+    int n = 0;
+    Mobile<D> mobile;
+    mobile.radius = r;
+    std::array<Body<D>, D> subset;
+    for (int skip = nb == D ? -1 : 0; skip < nb && skip < D + 1; ++skip) {
+      int q = 0;
+      for (int k = 0; k < nb; ++k)
+        if (k != skip) subset[static_cast<std::size_t>(q++)] = bodies[static_cast<std::size_t>(k)];
+      std::array<Placement<D>, 2> out;
+      const int m = solver_.solve(std::span<const Body<D>>(subset.data(), D), mobile, out);
+      for (int k = 0; k < m; ++k) found[static_cast<std::size_t>(n++)] = out[static_cast<std::size_t>(k)];
+      if (nb == D) break;
+    }
+    std::stable_sort(found.begin(), found.begin() + n, [&](const Placement<D>& a, const Placement<D>& b) {
+      return (a.position - target).squaredNorm() < (b.position - target).squaredNorm();
+    });
+    for (int k = 0; k < n; ++k) {
+      double rr = r;
+      if (try_place(found[static_cast<std::size_t>(k)].position, rr, may_reduce)) return true;
+    }
+    return false;
+  }
+
+  /// Adds the sphere (x, r) if it is inside the container, overlaps no sphere beyond the
+  /// allowance (fit: after reducing r to cancel such overlaps, kept if r >= r_min) and has
+  /// z_min contacts.
+  bool try_place(const Vec<D>& x, double& r, bool may_reduce) {
+    ++rep_.positions_tried;
+    const double sd = C_.signed_distance(x);
+    if (!(sd < 0)) {
+      ++rep_.rejected_container;
+      return false;
+    }
+    bool reduced = false;
+    if (-sd < r * (1 - tol_)) {  // contains_ball's rule: sd <= -r + tol r
+      if (!may_reduce) {
+        ++rep_.rejected_container;
+        return false;
+      }
+      r = -sd;
+      reduced = true;
+    }
+    double limit = r;
+    bool blocked = false;
+    grid_.for_each_within(x, r * (1 + tol_), [&](int, const Vec<D>&, double rj, double d2) {
+      const double d = std::sqrt(d2);
+      if (r + rj - d > std::max(allowance_, tol_ * std::min(r, rj))) {
+        blocked = true;
+        limit = std::min(limit, d - rj + allowance_);
+      }
+    });
+    if (blocked) {
+      if (!may_reduce) {
+        ++rep_.rejected_overlap;
+        return false;
+      }
+      r = limit;
+      reduced = true;
+    }
+    if (r < r_min_ * (1 - 1e-12)) {
+      ++rep_.rejected_contacts;
+      return false;
+    }
+    int z = -sd - r <= tol_ * r ? 1 : 0;  // a wall
+    double deepest = 0;
+    grid_.for_each_within(x, r * (1 + tol_), [&](int, const Vec<D>&, double rj, double d2) {
+      const double gap = std::sqrt(d2) - r - rj;
+      if (gap <= tol_ * std::min(r, rj)) ++z;
+      deepest = std::max(deepest, -gap);
+    });
+    if (z < z_min_) {
+      ++rep_.rejected_contacts;
+      return false;
+    }
+    if (reduced) ++rep_.radii_reduced;
+    const int id = P_.add(x, r);
+    grid_.insert(id, x, r);
+    solid_ += ball_measure<D>(r);
+    rep_.max_overlap_over_r_min = std::max(rep_.max_overlap_over_r_min, deepest / r_min_);
+    return true;
+  }
+
+  Packing<D>& P_;
+  const Container<D>& C_;
+  const RadiusDistribution& dist_;
+  const DensifyOptions& o_;
+  double tol_;
+  Rng rng_;
+  double r_min_, r_max_, allowance_;
+  int z_min_;
+  double measure_;
+  NeighbourGrid<D> grid_;
+  SphereContactSolver<D> solver_;
+  double solid_ = 0.0;
+  std::vector<double> pool_;  ///< distribution: radii drawn ahead, largest first
+  std::vector<Wall<D>> walls_;            ///< the round's walls of the mirrors
+  std::vector<TangentBody<D>> planes_;    ///< each as a plane (curved: tangent at the mirrored centre's foot)
+  std::vector<Mirror> mirrors_;           ///< triangulation vertex n_real + k is mirrors_[k]
+  VoidFillingReport rep_;
+};
+
+}  // namespace
+
+template <int D>
+VoidFillingReport fill_voids(Packing<D>& packing, const Container<D>& container, const RadiusDistribution& dist,
+                             const DensifyOptions& options, std::uint64_t seed, double contact_tolerance) {
+  return VoidFiller<D>(packing, container, dist, options, seed, contact_tolerance).run();
+}
+
+template VoidFillingReport fill_voids<2>(Packing<2>&, const Container<2>&, const RadiusDistribution&, const DensifyOptions&,
+                                         std::uint64_t, double);
+template VoidFillingReport fill_voids<3>(Packing<3>&, const Container<3>&, const RadiusDistribution&, const DensifyOptions&,
+                                         std::uint64_t, double);
+
+}  // namespace fp
