@@ -44,16 +44,11 @@ double ball_measure(double r) {
   else return std::numbers::pi * r * r;
 }
 
-/// A centre near the boundary reflected across a wall: a vertex of the triangulation that stands
-/// for the wall.
-struct Mirror {
-  int sphere;  ///< the centre reflected
-  int wall;    ///< index into the round's walls
-};
-
 template <int D>
 class VoidFiller {
  public:
+  using Simplex = typename GrowingDelaunay<D>::Simplex;
+
   VoidFiller(Packing<D>& packing, const Container<D>& container, const RadiusDistribution& dist, const DensifyOptions& o,
              std::uint64_t seed, double tol)
       : P_(packing), C_(container), dist_(dist), o_(o), tol_(tol), rng_(seed ^ kStream),
@@ -154,17 +149,19 @@ class VoidFiller {
     return false;
   }
 
-  /// The centres, then the mirrors of those near the walls (at most D walls each, nearest first).
-  void triangulation_points(std::vector<Vec<D>>& points, std::vector<double>& radii) {
-    points = P_.centers;
-    radii = P_.radii;
-    walls_.clear();
-    planes_.clear();
-    mirrors_.clear();
+  /// The spheres added since the last round, and the mirrors of those near the walls (at most
+  /// D walls each, nearest first), appended to the triangulation's points.
+  void add_points() {
+    const std::size_t first = points_.size();
+    for (std::size_t i = first_new_; i < P_.size(); ++i) {
+      points_.push_back(P_.centers[i]);
+      point_radii_.push_back(P_.radii[i]);
+      vertex_.push_back(static_cast<int>(i));
+    }
     std::vector<Wall<D>> near;
     struct Near { double distance; Vec<D> mirror; TangentBody<D> plane; std::size_t k; };
     std::vector<Near> found;
-    for (std::size_t i = 0; i < P_.size(); ++i) {
+    for (std::size_t i = first_new_; i < P_.size(); ++i) {
       const Vec<D>& c = P_.centers[i];
       const double reach = P_.radii[i] + 2.0 * r_max_;
       if (-C_.signed_distance(c) > reach) continue;
@@ -184,35 +181,38 @@ class VoidFiller {
       }
       std::stable_sort(found.begin(), found.end(), [](const Near& a, const Near& b) { return a.distance < b.distance; });
       int kept = 0;
-      const std::size_t first = points.size();
+      const std::size_t mine = points_.size();
       for (const Near& n : found) {
         if (kept == D) break;
         bool again = false;  // coplanar facets of a mesh give the same mirror
-        for (std::size_t q = first; q < points.size() && !again; ++q)
-          again = (points[q] - n.mirror).norm() <= 1e-9 * P_.radii[i];
+        for (std::size_t q = mine; q < points_.size() && !again; ++q)
+          again = (points_[q] - n.mirror).norm() <= 1e-9 * P_.radii[i];
         if (again) continue;
-        mirrors_.push_back({static_cast<int>(i), static_cast<int>(walls_.size())});
+        vertex_.push_back(-1 - static_cast<int>(walls_.size()));
         walls_.push_back(near[n.k]);
         planes_.push_back(n.plane);
-        points.push_back(n.mirror);
-        radii.push_back(P_.radii[i]);
+        points_.push_back(n.mirror);
+        point_radii_.push_back(P_.radii[i]);
         ++kept;
       }
     }
-    rep_.mirrored += mirrors_.size();
+    rep_.mirrored += points_.size() - first - (P_.size() - first_new_);
+    first_new_ = P_.size();
+    triangulated_ = first;
   }
 
-  /// One triangulation and a pass over its voids, largest first; returns the spheres added.
+  /// One round: the triangulation grown by what the previous round added, and a pass over its
+  /// new voids (and, in distribution mode, the open voids a pooled radius may still fit),
+  /// largest first; returns the spheres added.
   std::size_t fill_round() {
     const std::size_t before = P_.size();
-    std::vector<Vec<D>> points;
-    std::vector<double> radii;
-    triangulation_points(points, radii);
+    add_points();
     const auto t0 = std::chrono::steady_clock::now();
-    const std::vector<std::array<std::uint32_t, D + 1>> simplices = delaunay_simplices<D>(points);
+    std::vector<Simplex> simplices = dt_.insert(points_, triangulated_);
     rep_.triangulation_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     ++rep_.rounds;
-    const std::size_t n_real = before;
+    simplices.insert(simplices.end(), waiting_.begin(), waiting_.end());
+    waiting_.clear();
 
     struct Void { double measure; std::uint32_t simplex; };
     std::vector<Void> voids;
@@ -223,9 +223,9 @@ class VoidFiller {
       bool real = false;
       for (int k = 0; k <= D; ++k) {
         const std::uint32_t v = simplices[s][static_cast<std::size_t>(k)];
-        c[static_cast<std::size_t>(k)] = points[v];
-        r[static_cast<std::size_t>(k)] = radii[v];
-        real |= v < n_real;
+        c[static_cast<std::size_t>(k)] = points_[v];
+        r[static_cast<std::size_t>(k)] = point_radii_[v];
+        real |= vertex_[v] >= 0;
       }
       if (!real) continue;
       const double m = simplex_void_measure<D>(c, r);
@@ -236,15 +236,19 @@ class VoidFiller {
       return a.measure != b.measure ? a.measure > b.measure : a.simplex < b.simplex;
     });
     for (const Void& v : voids) {
-      fill(simplices[v.simplex], points, radii, n_real);
+      if (fill(simplices[v.simplex]) == Outcome::Open && o_.radii == VoidRadii::Distribution)
+        waiting_.push_back(simplices[v.simplex]);
       if (reached()) break;
     }
     return P_.size() - before;
   }
 
+  /// What became of a void: filled, too small for r_min (or no sphere touches its bodies), or
+  /// open (room for r_min, not filled).
+  enum class Outcome { Filled, Closed, Open };
+
   /// Tries to put one sphere into the void of simplex `s`.
-  void fill(const std::array<std::uint32_t, D + 1>& s, const std::vector<Vec<D>>& points, const std::vector<double>& radii,
-            std::size_t n_real) {
+  Outcome fill(const Simplex& s) {
     // Its bodies: the spheres at its vertices, the walls of its mirror vertices (once each).
     std::array<Body<D>, D + 1> bodies;
     std::array<TangentBody<D>, D + 1> exact, estimate;
@@ -253,14 +257,14 @@ class VoidFiller {
     Vec<D> centroid = Vec<D>::Zero();
     for (int k = 0; k <= D; ++k) {
       const std::uint32_t v = s[static_cast<std::size_t>(k)];
-      centroid += points[v] / (D + 1.0);
-      estimate[static_cast<std::size_t>(k)] = TangentBody<D>::sphere(points[v], radii[v]);
-      if (v < n_real) {
-        bodies[static_cast<std::size_t>(nb)] = Body<D>::sphere(points[v], radii[v], static_cast<int>(v));
+      centroid += points_[v] / (D + 1.0);
+      estimate[static_cast<std::size_t>(k)] = TangentBody<D>::sphere(points_[v], point_radii_[v]);
+      if (vertex_[v] >= 0) {
+        bodies[static_cast<std::size_t>(nb)] = Body<D>::sphere(points_[v], point_radii_[v], vertex_[v]);
         exact[static_cast<std::size_t>(nb++)] = estimate[static_cast<std::size_t>(k)];
         continue;
       }
-      const int w = mirrors_[v - n_real].wall;
+      const int w = -1 - vertex_[v];
       if (std::find(wall_of.begin(), wall_of.begin() + walls, w) != wall_of.begin() + walls) continue;
       wall_of[static_cast<std::size_t>(walls++)] = w;
       bodies[static_cast<std::size_t>(nb)] = Body<D>::of_wall(walls_[static_cast<std::size_t>(w)]);
@@ -275,23 +279,24 @@ class VoidFiller {
       if (best < 0 || (fits.at[static_cast<std::size_t>(k)].centre - centroid).squaredNorm() <
                           (fits.at[static_cast<std::size_t>(best)].centre - centroid).squaredNorm())
         best = k;
-    if (best < 0) return;
+    if (best < 0) return Outcome::Closed;
     const TangentSphere<D> room = fits.at[static_cast<std::size_t>(best)];
-    if (room.radius < r_min_ * (1 - kRoomSlack)) return;
+    if (room.radius < r_min_ * (1 - kRoomSlack)) return Outcome::Closed;
     ++rep_.voids_open;
 
     if (o_.radii == VoidRadii::Fit) {
+      bool filled = false;
       if (determined && room.radius <= r_max_) {
         double r = room.radius;
-        if (try_place(room.centre, r, true)) return;
+        filled = try_place(room.centre, r, true);
         // A curved wall stood as its tangent plane: that radius touching D of the bodies, the
         // wall itself among them.
-        if (walls > 0) place_touching(bodies, nb, room.radius, room.centre, true);
-        return;
+        if (!filled && walls > 0) filled = place_touching(bodies, nb, room.radius, room.centre, true);
+      } else {
+        if (room.radius > r_max_) ++rep_.radii_capped;
+        filled = place_touching(bodies, nb, std::min(room.radius, r_max_), room.centre, true);
       }
-      if (room.radius > r_max_) ++rep_.radii_capped;
-      place_touching(bodies, nb, std::min(room.radius, r_max_), room.centre, true);
-      return;
+      return filled ? Outcome::Filled : Outcome::Open;
     }
     // Distribution: the largest pooled radii that the room can take.
     int tried = 0;
@@ -304,9 +309,10 @@ class VoidFiller {
       if (place_touching(bodies, nb, r, room.centre, false)) {
         pool_.erase(pool_.begin() + static_cast<std::ptrdiff_t>(p));
         draw();
-        return;
+        return Outcome::Filled;
       }
     }
+    return Outcome::Open;
   }
 
   /// Places a sphere of radius r touching D of the `nb` bodies, at the valid position nearest
@@ -409,9 +415,16 @@ class VoidFiller {
   SphereContactSolver<D> solver_;
   double solid_ = 0.0;
   std::vector<double> pool_;  ///< distribution: radii drawn ahead, largest first
-  std::vector<Wall<D>> walls_;            ///< the round's walls of the mirrors
-  std::vector<TangentBody<D>> planes_;    ///< each as a plane (curved: tangent at the mirrored centre's foot)
-  std::vector<Mirror> mirrors_;           ///< triangulation vertex n_real + k is mirrors_[k]
+  // The triangulation and its points: the centres and their mirrors, in the order inserted.
+  GrowingDelaunay<D> dt_;
+  std::vector<Vec<D>> points_;
+  std::vector<double> point_radii_;       ///< a mirror: its sphere's radius
+  std::vector<int> vertex_;               ///< per point: its sphere, or -1 - its wall (a mirror)
+  std::size_t first_new_ = 0;             ///< spheres before it are in the triangulation
+  std::size_t triangulated_ = 0;          ///< points before it are in the triangulation
+  std::vector<Wall<D>> walls_;            ///< per mirror: the wall it stands for
+  std::vector<TangentBody<D>> planes_;    ///< and the wall as a plane (curved: tangent at the mirrored centre's foot)
+  std::vector<Simplex> waiting_;          ///< distribution: open voids to try again next round
   VoidFillingReport rep_;
 };
 

@@ -3,9 +3,12 @@
 // step 7b, "in search of void spaces". The voids are the simplices of the Delaunay triangulation
 // of the centres (CGAL), taken largest void first (Eq. 10: the simplex's volume minus the
 // spheres' parts in its corners); each gets a sphere touching D of its bodies, or all D + 1 with
-// the radius the void gives (Eqs. 1-9, contact/tangent_sphere.hpp); the triangulation is made
-// again with the new spheres, round after round, until a round adds nothing, a round limit, a
-// target solid fraction phi0 or a count N0 (both checked after every sphere, as the paper asks).
+// the radius the void gives (Eqs. 1-9, contact/tangent_sphere.hpp). The triangulation then grows
+// by the new spheres and the next round visits the voids they made (a void that was not filled
+// stays unfillable: its bodies are the same and its surroundings only fuller; in distribution
+// mode, where a later draw may be smaller, the open ones are visited again), round after round,
+// until a round adds nothing, a round limit, a target solid fraction phi0 or a count N0 (both
+// checked after every sphere, as the paper asks).
 //
 // Walls: the centres near the container's boundary are mirrored across it, so the triangulation
 // also has the voids between the outer spheres and the walls; in such a void the wall itself

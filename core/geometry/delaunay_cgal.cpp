@@ -8,6 +8,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 #include <CGAL/property_map.h>
@@ -16,6 +18,46 @@
 
 namespace fp {
 namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+/// A cell's mark: returned by an earlier batch. A cell CGAL makes starts unmarked.
+struct Returned {
+  bool yes = false;
+};
+
+/// The types of the triangulation of each dimension.
+template <int D>
+struct Cgal;
+template <>
+struct Cgal<3> {
+  using Vb = CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, K>;
+  using Cb = CGAL::Triangulation_cell_base_with_info_3<Returned, K>;
+  using Triangulation = CGAL::Delaunay_triangulation_3<K, CGAL::Triangulation_data_structure_3<Vb, Cb>>;
+  using Point = K::Point_3;
+  using Sort = CGAL::Spatial_sort_traits_adapter_3<K, CGAL::First_of_pair_property_map<std::pair<Point, std::uint32_t>>>;
+  static Point point(const Vec3& p) { return Point(p.x(), p.y(), p.z()); }
+  static auto cells(const Triangulation& t) { return t.finite_cell_handles(); }
+  static auto hint(typename Triangulation::Vertex_handle v) { return v->cell(); }
+  static bool positive(const std::vector<Vec3>& p, const std::array<std::uint32_t, 4>& s) {
+    return (p[s[1]] - p[s[0]]).cross(p[s[2]] - p[s[0]]).dot(p[s[3]] - p[s[0]]) >= 0;
+  }
+};
+template <>
+struct Cgal<2> {
+  using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
+  using Fb = CGAL::Triangulation_face_base_with_info_2<Returned, K>;
+  using Triangulation = CGAL::Delaunay_triangulation_2<K, CGAL::Triangulation_data_structure_2<Vb, Fb>>;
+  using Point = K::Point_2;
+  using Sort = CGAL::Spatial_sort_traits_adapter_2<K, CGAL::First_of_pair_property_map<std::pair<Point, std::uint32_t>>>;
+  static Point point(const Vec2& p) { return Point(p.x(), p.y()); }
+  static auto cells(const Triangulation& t) { return t.finite_face_handles(); }
+  static auto hint(typename Triangulation::Vertex_handle v) { return v->face(); }
+  static bool positive(const std::vector<Vec2>& p, const std::array<std::uint32_t, 3>& s) {
+    const Vec2 a = p[s[1]] - p[s[0]], b = p[s[2]] - p[s[0]];
+    return a.x() * b.y() - a.y() * b.x() >= 0;
+  }
+};
 
 /// A stable order for byte-identical reruns: by sorted vertex indices (each key made once: a
 /// comparison that sorted both keys was half the time of a triangulation).
@@ -34,72 +76,58 @@ void sort_simplices(std::vector<std::array<std::uint32_t, N>>& simplices) {
 
 }  // namespace
 
-std::vector<std::array<std::uint32_t, 4>> delaunay_tetrahedra(const std::vector<Vec3>& points) {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using Vb = CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, K>;
-  using Tds = CGAL::Triangulation_data_structure_3<Vb>;
-  using Delaunay = CGAL::Delaunay_triangulation_3<K, Tds>;
-  using Item = std::pair<K::Point_3, std::uint32_t>;
+template <int D>
+struct GrowingDelaunay<D>::Impl {
+  typename Cgal<D>::Triangulation t;
+};
+
+template <int D>
+GrowingDelaunay<D>::GrowingDelaunay() : impl_(std::make_unique<Impl>()) {}
+template <int D>
+GrowingDelaunay<D>::~GrowingDelaunay() = default;
+
+template <int D>
+std::vector<typename GrowingDelaunay<D>::Simplex> GrowingDelaunay<D>::insert(const std::vector<Vec<D>>& points,
+                                                                            std::size_t from) {
+  using C = Cgal<D>;
+  auto& t = impl_->t;
+  using Item = std::pair<typename C::Point, std::uint32_t>;
   std::vector<Item> input;
-  input.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    input.emplace_back(K::Point_3(points[i].x(), points[i].y(), points[i].z()), static_cast<std::uint32_t>(i));
+  input.reserve(points.size() - std::min(from, points.size()));
+  for (std::size_t i = from; i < points.size(); ++i) input.emplace_back(C::point(points[i]), static_cast<std::uint32_t>(i));
   // Inserted along a space-filling curve (each point near the last: fast location); a point
   // given twice is one vertex, which keeps the smaller index whatever the order.
-  CGAL::spatial_sort(input.begin(), input.end(),
-                     CGAL::Spatial_sort_traits_adapter_3<K, CGAL::First_of_pair_property_map<Item>>());
-  Delaunay dt;
-  Delaunay::Cell_handle hint;
+  CGAL::spatial_sort(input.begin(), input.end(), typename C::Sort());
+  decltype(C::hint(typename C::Triangulation::Vertex_handle())) hint{};
   for (const auto& [p, i] : input) {
-    const std::size_t before = dt.number_of_vertices();
-    const Delaunay::Vertex_handle v = dt.insert(p, hint);
-    v->info() = dt.number_of_vertices() > before ? i : std::min(v->info(), i);
-    hint = v->cell();
+    const std::size_t before = t.number_of_vertices();
+    const auto v = t.insert(p, hint);
+    v->info() = t.number_of_vertices() > before ? i : std::min(v->info(), i);
+    hint = C::hint(v);
   }
-  std::vector<std::array<std::uint32_t, 4>> tets;
-  if (dt.dimension() < 3) return tets;
-  tets.reserve(dt.number_of_finite_cells());
-  for (const auto c : dt.finite_cell_handles()) {
-    std::array<std::uint32_t, 4> t = {c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()};
-    const Vec3 &a = points[t[0]], &b = points[t[1]], &d = points[t[2]], &e = points[t[3]];
-    if ((b - a).cross(d - a).dot(e - a) < 0) std::swap(t[2], t[3]);  // CGAL's cells are positive; rounding aside
-    tets.push_back(t);
+  std::vector<Simplex> made;
+  if (t.dimension() < D) return made;
+  for (const auto c : C::cells(t)) {
+    if (c->info().yes) continue;
+    c->info().yes = true;
+    Simplex s;
+    for (int k = 0; k <= D; ++k) s[static_cast<std::size_t>(k)] = c->vertex(k)->info();
+    if (!C::positive(points, s)) std::swap(s[D - 1], s[D]);  // CGAL's cells are positive; rounding aside
+    made.push_back(s);
   }
-  sort_simplices(tets);
-  return tets;
+  sort_simplices(made);
+  return made;
+}
+
+template class GrowingDelaunay<2>;
+template class GrowingDelaunay<3>;
+
+std::vector<std::array<std::uint32_t, 4>> delaunay_tetrahedra(const std::vector<Vec3>& points) {
+  return GrowingDelaunay<3>().insert(points, 0);
 }
 
 std::vector<std::array<std::uint32_t, 3>> delaunay_triangles(const std::vector<Vec2>& points) {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
-  using Tds = CGAL::Triangulation_data_structure_2<Vb>;
-  using Delaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
-  using Item = std::pair<K::Point_2, std::uint32_t>;
-  std::vector<Item> input;
-  input.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    input.emplace_back(K::Point_2(points[i].x(), points[i].y()), static_cast<std::uint32_t>(i));
-  CGAL::spatial_sort(input.begin(), input.end(),
-                     CGAL::Spatial_sort_traits_adapter_2<K, CGAL::First_of_pair_property_map<Item>>());
-  Delaunay dt;
-  Delaunay::Face_handle hint;
-  for (const auto& [p, i] : input) {
-    const std::size_t before = dt.number_of_vertices();
-    const Delaunay::Vertex_handle v = dt.insert(p, hint);
-    v->info() = dt.number_of_vertices() > before ? i : std::min(v->info(), i);
-    hint = v->face();
-  }
-  std::vector<std::array<std::uint32_t, 3>> triangles;
-  if (dt.dimension() < 2) return triangles;
-  triangles.reserve(dt.number_of_faces());
-  for (const auto f : dt.finite_face_handles()) {
-    std::array<std::uint32_t, 3> t = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
-    const Vec2 a = points[t[1]] - points[t[0]], b = points[t[2]] - points[t[0]];
-    if (a.x() * b.y() - a.y() * b.x() < 0) std::swap(t[1], t[2]);
-    triangles.push_back(t);
-  }
-  sort_simplices(triangles);
-  return triangles;
+  return GrowingDelaunay<2>().insert(points, 0);
 }
 
 }  // namespace fp

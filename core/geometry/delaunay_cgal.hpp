@@ -1,29 +1,44 @@
 #pragma once
-// The Delaunay tetrahedra of a set of points (CGAL's Delaunay_triangulation_3, exact predicates):
-// the "void spaces" of paper 000's step 7b are the tetrahedra of the triangulation of the sphere
-// centres. CGAL is confined to delaunay_cgal.cpp.
+// The Delaunay triangulation of a set of points (CGAL's Delaunay_triangulation_3 and _2, exact
+// predicates): the "void spaces" of paper 000's step 7b are the tetrahedra (2D: triangles) of
+// the triangulation of the sphere centres. It grows: points are added in batches, and each batch
+// returns the simplices it made, so that a void filling round looks only at the voids around
+// what the previous round added. CGAL is confined to delaunay_cgal.cpp.
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/geometry/vec.hpp"
 
 namespace fp {
 
-/// The finite cells of the Delaunay triangulation of `points`, as indices into it, each
-/// positively oriented. Points given twice are one vertex (the first index); fewer than four
-/// points, or all on a plane, give none.
+template <int D>
+class GrowingDelaunay {
+ public:
+  using Simplex = std::array<std::uint32_t, D + 1>;
+  GrowingDelaunay();
+  ~GrowingDelaunay();
+  GrowingDelaunay(const GrowingDelaunay&) = delete;
+  GrowingDelaunay& operator=(const GrowingDelaunay&) = delete;
+
+  /// Inserts points[from], points[from + 1], ... (the earlier ones were inserted by earlier
+  /// calls with the same vector, grown since) and returns the finite simplices made since the
+  /// previous call (on the first, all of them), as indices into `points`, each positively
+  /// oriented, sorted by their sorted vertex indices. A point given twice is one vertex (the
+  /// smaller index); while the points lie on a plane (2D: a line) there are none.
+  std::vector<Simplex> insert(const std::vector<Vec<D>>& points, std::size_t from);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// The finite cells of the Delaunay triangulation of `points` (one batch of GrowingDelaunay<3>).
 std::vector<std::array<std::uint32_t, 4>> delaunay_tetrahedra(const std::vector<Vec3>& points);
 
-/// 2D: the finite faces of the Delaunay triangulation of `points`, each counter-clockwise; the
-/// same rules (duplicates, fewer than three points or all on a line: none).
+/// 2D: the finite faces, each counter-clockwise (one batch of GrowingDelaunay<2>).
 std::vector<std::array<std::uint32_t, 3>> delaunay_triangles(const std::vector<Vec2>& points);
-
-/// The simplices of the dimension's triangulation (tetrahedra or triangles).
-template <int D>
-std::vector<std::array<std::uint32_t, D + 1>> delaunay_simplices(const std::vector<Vec<D>>& points) {
-  if constexpr (D == 3) return delaunay_tetrahedra(points);
-  else return delaunay_triangles(points);
-}
 
 }  // namespace fp

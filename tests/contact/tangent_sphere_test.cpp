@@ -129,5 +129,60 @@ TEST(TangentSphere, CoplanarCentresHaveNoSolution) {
   EXPECT_NEAR((soddy.at[0].centre - Vec2(1, 1 / std::sqrt(3.0))).norm(), 0, 1e-15);
 }
 
+// Walls as planes: a sphere touching three spheres and a plane (a box face), two and two planes
+// (an edge), one and three planes (a corner), built around a known sphere; the plane rows are
+// exact, so the solution touches each body within 1e-10 relative; with radius ratios of 1000.
+TEST(TangentSphere, PlanesStandForWalls) {
+  Rng rng(11);
+  int found = 0, trials = 0;
+  for (int t = 0; t < 3000; ++t) {
+    const int planes = 1 + t % 3;
+    const double r = 0.01 * std::pow(1000.0, rng.uniform01());
+    Vec3 x;
+    for (int a = 0; a < 3; ++a) x[a] = rng.uniform(-5, 5);
+    std::array<TangentBody<3>, 4> b;
+    std::array<Vec3, 3> axes = {random_direction<3>(rng), Vec3::Zero(), Vec3::Zero()};
+    axes[1] = axes[0].cross(random_direction<3>(rng)).normalized();
+    axes[2] = axes[0].cross(axes[1]);
+    for (int i = 0; i < 4; ++i) {
+      if (i < planes) {  // mutually perpendicular walls at distance r, normals towards x
+        const Vec3 n = axes[static_cast<std::size_t>(i)];
+        b[static_cast<std::size_t>(i)] = TangentBody<3>::wall(x - r * n + rng.uniform(-3, 3) * axes[static_cast<std::size_t>((i + 1) % 3)], n);
+      } else {  // spheres on the open side of every wall
+        const double ri = 0.01 * std::pow(1000.0, rng.uniform01());
+        Vec3 u = random_direction<3>(rng);
+        for (int k = 0; k < planes; ++k) u += 1.5 * axes[static_cast<std::size_t>(k)];
+        b[static_cast<std::size_t>(i)] = TangentBody<3>::sphere(x + u.normalized() * (r + ri), ri);
+      }
+    }
+    const TangentSpheres<3> s = spheres_tangent_to<3>(b);
+    ++trials;
+    bool hit = false;
+    for (int k = 0; k < s.count; ++k) {
+      const TangentSphere<3>& q = s.at[static_cast<std::size_t>(k)];
+      for (const TangentBody<3>& body : b) {
+        const double gap = body.plane ? body.normal.dot(q.centre - body.point) - q.radius
+                                      : (q.centre - body.point).norm() - q.radius - body.radius;
+        EXPECT_LE(std::abs(gap), 1e-10 * (body.plane ? q.radius : std::min(q.radius, body.radius))) << "trial " << t;
+      }
+      hit |= std::abs(q.radius - r) <= 1e-9 * r && (q.centre - x).norm() <= 1e-9 * r;
+    }
+    found += hit;
+  }
+  EXPECT_GE(found, trials * 95 / 100) << found << " of " << trials;
+  // Only planes: no sphere to square; refused.
+  std::array<TangentBody<2>, 3> walls = {TangentBody<2>::wall(Vec2(0, 0), Vec2(1, 0)), TangentBody<2>::wall(Vec2(0, 0), Vec2(0, 1)),
+                                         TangentBody<2>::wall(Vec2(1, 1), Vec2(-1, 0))};
+  EXPECT_EQ(spheres_tangent_to<2>(walls).count, 0);
+  // 2D: the disk in the corner of two walls touching a unit disk at (3, 3): r = 3 (2 - sqrt(2)) ... by brute force.
+  walls[2] = TangentBody<2>::sphere(Vec2(3, 3), 1);
+  const TangentSpheres<2> corner = spheres_tangent_to<2>(walls);
+  ASSERT_GE(corner.count, 1);
+  const TangentSphere<2>& q = corner.at[0];
+  EXPECT_NEAR(q.centre.x(), q.radius, 1e-14);
+  EXPECT_NEAR(q.centre.y(), q.radius, 1e-14);
+  EXPECT_NEAR((q.centre - Vec2(3, 3)).norm(), q.radius + 1, 1e-14);
+}
+
 }  // namespace
 }  // namespace fp

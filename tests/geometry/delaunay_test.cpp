@@ -1,6 +1,7 @@
 // The Delaunay tetrahedra of paper 000's step 7b (CGAL): against brute force, every circumsphere
 // is empty; a lattice's cells tile its box; the same cells whatever the input order; a point
-// given twice keeps its first index; too few or coplanar points give none.
+// given twice keeps its first index; too few or coplanar points give none. The same for the
+// triangles of 2D.
 #include "core/geometry/delaunay_cgal.hpp"
 
 #include <gtest/gtest.h>
@@ -94,6 +95,40 @@ TEST(Delaunay, DuplicatesFewAndCoplanarPoints) {
   EXPECT_TRUE(delaunay_tetrahedra({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}).empty());
   EXPECT_TRUE(delaunay_tetrahedra({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(2, 3, 0)}).empty());
   EXPECT_TRUE(delaunay_tetrahedra({}).empty());
+}
+
+TEST(Delaunay, TrianglesIn2DAreEmptyCirclesCounterClockwiseAndTileTheHull) {
+  Rng rng(4);
+  std::vector<Vec2> p(400);
+  for (Vec2& x : p) x = Vec2(rng.uniform01(), rng.uniform01());
+  const auto tris = delaunay_triangles(p);
+  ASSERT_GT(tris.size(), 700u);  // 2n - 2 - hull
+  for (const auto& t : tris) {
+    const Vec2 a = p[t[1]] - p[t[0]], b = p[t[2]] - p[t[0]];
+    EXPECT_GT(a.x() * b.y() - a.y() * b.x(), 0);
+    // Circumcentre: 2 d_i . c = |d_i|^2 relative to the first vertex.
+    Eigen::Matrix2d A;
+    A.row(0) = 2 * a.transpose();
+    A.row(1) = 2 * b.transpose();
+    const Vec2 c = p[t[0]] + A.fullPivLu().solve(Vec2(a.squaredNorm(), b.squaredNorm()));
+    const double r = (p[t[0]] - c).norm();
+    for (std::size_t k = 0; k < p.size(); ++k)
+      if (k != t[0] && k != t[1] && k != t[2]) EXPECT_GT((p[k] - c).norm(), r * (1 - 1e-12));
+  }
+  // A 5 x 5 lattice (cocircular squares: any diagonal) tiles its 4 x 4 square.
+  std::vector<Vec2> lattice;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j) lattice.emplace_back(i, j);
+  double area = 0;
+  for (const auto& t : delaunay_triangles(lattice)) {
+    const Vec2 a = lattice[t[1]] - lattice[t[0]], b = lattice[t[2]] - lattice[t[0]];
+    area += (a.x() * b.y() - a.y() * b.x()) / 2;
+  }
+  EXPECT_NEAR(area, 16.0, 1e-12);
+  EXPECT_TRUE(delaunay_triangles({Vec2(0, 0), Vec2(1, 1), Vec2(2, 2)}).empty());
+  const auto dup = delaunay_triangles({Vec2(0, 0), Vec2(1, 0), Vec2(0, 1), Vec2(1, 0)});
+  ASSERT_EQ(dup.size(), 1u);
+  for (const std::uint32_t v : dup[0]) EXPECT_LT(v, 3u);
 }
 
 }  // namespace

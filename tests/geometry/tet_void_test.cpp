@@ -70,5 +70,15 @@ TEST(TetVoid, VoidMatchesABruteForceCount) {
   EXPECT_NEAR(tet_void_volume(skew, {0, 0, 0, 0}), std::abs((skew[1] - skew[0]).cross(skew[2] - skew[0]).dot(skew[3] - skew[0])) / 6.0, 1e-15);
 }
 
+TEST(TetVoid, TriangleVoidIsTheAreaMinusTheSectors) {
+  // Three mutually touching unit disks: the curvilinear triangle between them, sqrt(3) - pi / 2.
+  const std::array<Vec2, 3> tri = {Vec2(0, 0), Vec2(2, 0), Vec2(1, std::sqrt(3.0))};
+  EXPECT_NEAR(triangle_void_area(tri, {1, 1, 1}), std::sqrt(3.0) - kPi / 2, 1e-15);
+  EXPECT_NEAR(simplex_void_measure<2>(tri, {0, 0, 0}), std::sqrt(3.0), 1e-15);
+  // A right triangle, disks of different radii in their corners: sectors of pi/2, pi/4, pi/4.
+  const std::array<Vec2, 3> right = {Vec2(0, 0), Vec2(4, 0), Vec2(0, 4)};
+  EXPECT_NEAR(triangle_void_area(right, {1, 0.5, 2}), 8 - (kPi / 4 * 1 + kPi / 8 * 0.25 + kPi / 8 * 4), 1e-14);
+}
+
 }  // namespace
 }  // namespace fp
