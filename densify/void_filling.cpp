@@ -282,6 +282,12 @@ class VoidFiller {
     if (best < 0) return Outcome::Closed;
     const TangentSphere<D> room = fits.at[static_cast<std::size_t>(best)];
     if (room.radius < r_min_ * (1 - kRoomSlack)) return Outcome::Closed;
+    // Distribution: the room's centre may be blocked by a sphere of another void; the ball free
+    // around it must take r_min too (most voids of a dense packing fail here, before up to
+    // 3 x 2(D + 1) positions are tried: Fuller R = 7, 4.9 s -> 0.7 s, VF 0.668 -> 0.667). The
+    // fit mode tries the room's centre first anyway, and its other positions find more.
+    if (o_.radii == VoidRadii::Distribution && free_radius(room.centre, room.radius) < r_min_ * (1 - kRoomSlack))
+      return Outcome::Closed;
     ++rep_.voids_open;
 
     if (o_.radii == VoidRadii::Fit) {
@@ -313,6 +319,16 @@ class VoidFiller {
       }
     }
     return Outcome::Open;
+  }
+
+  /// The largest ball centred at x inside the container and overlapping no sphere beyond the
+  /// allowance, up to `cap`.
+  double free_radius(const Vec<D>& x, double cap) const {
+    double free = std::min(cap, -C_.signed_distance(x));
+    grid_.for_each_within(x, free, [&](int, const Vec<D>&, double rj, double d2) {
+      free = std::min(free, std::sqrt(d2) - rj + allowance_);
+    });
+    return free;
   }
 
   /// Places a sphere of radius r touching D of the `nb` bodies, at the valid position nearest
