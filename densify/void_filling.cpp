@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "contact/sphere_contact_solver.hpp"
+#include "contact/sphere_placement.hpp"
 #include "contact/tangent_sphere.hpp"
 #include "core/geometry/delaunay_cgal.hpp"
 #include "core/geometry/neighbour_grid.hpp"
@@ -54,11 +55,9 @@ class VoidFiller {
       : P_(packing), C_(container), dist_(dist), o_(o), tol_(tol), rng_(seed ^ kStream),
         r_min_(dist.r_min()), r_max_(dist.r_max()), allowance_(o.overlap * dist.r_min()),
         z_min_(o.z_min > 0 ? o.z_min : D), measure_(container.measure()),
-        grid_(container.bounds(), std::min(r_min_, smallest_radius(packing)), std::max(r_max_, largest_radius(packing))) {
-    for (std::size_t i = 0; i < P_.size(); ++i) {
-      grid_.insert(static_cast<int>(i), P_.centers[i], P_.radii[i]);
-      solid_ += ball_measure<D>(P_.radii[i]);
-    }
+        grid_(container.bounds(), std::min(r_min_, smallest_radius(packing)), std::max(r_max_, largest_radius(packing))),
+        place_(packing, grid_, &container, r_min_, tol, allowance_, z_min_) {
+    for (std::size_t i = 0; i < P_.size(); ++i) solid_ += ball_measure<D>(P_.radii[i]);
     rep_.before = P_.size();
     rep_.solid_before = solid_;
     if (o_.radii == VoidRadii::Distribution) {
@@ -87,6 +86,13 @@ class VoidFiller {
     rep_.added = P_.size() - rep_.before;
     rep_.solid_after = solid_;
     rep_.radii_unplaced = pool_.size();
+    const PlacementRejections& rej = place_.rejections();
+    rep_.positions_tried = rej.tried;
+    rep_.rejected_container = rej.container;
+    rep_.rejected_overlap = rej.overlap;
+    rep_.rejected_contacts = rej.contacts;
+    rep_.radii_reduced = rej.reduced;
+    rep_.max_overlap_over_r_min = place_.deepest_overlap() / r_min_;
     rep_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return rep_;
   }
@@ -286,7 +292,7 @@ class VoidFiller {
     // around it must take r_min too (most voids of a dense packing fail here, before up to
     // 3 x 2(D + 1) positions are tried: Fuller R = 7, 4.9 s -> 0.7 s, VF 0.668 -> 0.667). The
     // fit mode tries the room's centre first anyway, and its other positions find more.
-    if (o_.radii == VoidRadii::Distribution && free_radius(room.centre, room.radius) < r_min_ * (1 - kRoomSlack))
+    if (o_.radii == VoidRadii::Distribution && place_.free_radius(room.centre, room.radius) < r_min_ * (1 - kRoomSlack))
       return Outcome::Closed;
     ++rep_.voids_open;
 
@@ -321,16 +327,6 @@ class VoidFiller {
     return Outcome::Open;
   }
 
-  /// The largest ball centred at x inside the container and overlapping no sphere beyond the
-  /// allowance, up to `cap`.
-  double free_radius(const Vec<D>& x, double cap) const {
-    double free = std::min(cap, -C_.signed_distance(x));
-    grid_.for_each_within(x, free, [&](int, const Vec<D>&, double rj, double d2) {
-      free = std::min(free, std::sqrt(d2) - rj + allowance_);
-    });
-    return free;
-  }
-
   /// Places a sphere of radius r touching D of the `nb` bodies, at the valid position nearest
   /// `target`; in fit mode its radius may be reduced to cancel an overlap.
   bool place_touching(const std::array<Body<D>, D + 1>& bodies, int nb, double r, const Vec<D>& target, bool may_reduce) {
@@ -359,62 +355,9 @@ class VoidFiller {
     return false;
   }
 
-  /// Adds the sphere (x, r) if it is inside the container, overlaps no sphere beyond the
-  /// allowance (fit: after reducing r to cancel such overlaps, kept if r >= r_min) and has
-  /// z_min contacts.
   bool try_place(const Vec<D>& x, double& r, bool may_reduce) {
-    ++rep_.positions_tried;
-    const double sd = C_.signed_distance(x);
-    if (!(sd < 0)) {
-      ++rep_.rejected_container;
-      return false;
-    }
-    bool reduced = false;
-    if (-sd < r * (1 - tol_)) {  // contains_ball's rule: sd <= -r + tol r
-      if (!may_reduce) {
-        ++rep_.rejected_container;
-        return false;
-      }
-      r = -sd;
-      reduced = true;
-    }
-    double limit = r;
-    bool blocked = false;
-    grid_.for_each_within(x, r * (1 + tol_), [&](int, const Vec<D>&, double rj, double d2) {
-      const double d = std::sqrt(d2);
-      if (r + rj - d > std::max(allowance_, tol_ * std::min(r, rj))) {
-        blocked = true;
-        limit = std::min(limit, d - rj + allowance_);
-      }
-    });
-    if (blocked) {
-      if (!may_reduce) {
-        ++rep_.rejected_overlap;
-        return false;
-      }
-      r = limit;
-      reduced = true;
-    }
-    if (r < r_min_ * (1 - 1e-12)) {
-      ++rep_.rejected_contacts;
-      return false;
-    }
-    int z = -sd - r <= tol_ * r ? 1 : 0;  // a wall
-    double deepest = 0;
-    grid_.for_each_within(x, r * (1 + tol_), [&](int, const Vec<D>&, double rj, double d2) {
-      const double gap = std::sqrt(d2) - r - rj;
-      if (gap <= tol_ * std::min(r, rj)) ++z;
-      deepest = std::max(deepest, -gap);
-    });
-    if (z < z_min_) {
-      ++rep_.rejected_contacts;
-      return false;
-    }
-    if (reduced) ++rep_.radii_reduced;
-    const int id = P_.add(x, r);
-    grid_.insert(id, x, r);
+    if (!place_.try_place(x, r, may_reduce)) return false;
     solid_ += ball_measure<D>(r);
-    rep_.max_overlap_over_r_min = std::max(rep_.max_overlap_over_r_min, deepest / r_min_);
     return true;
   }
 
@@ -428,6 +371,7 @@ class VoidFiller {
   int z_min_;
   double measure_;
   NeighbourGrid<D> grid_;
+  SpherePlacement<D> place_;
   SphereContactSolver<D> solver_;
   double solid_ = 0.0;
   std::vector<double> pool_;  ///< distribution: radii drawn ahead, largest first
