@@ -1,6 +1,7 @@
 #pragma once
-// `frontpack pack` for a scene of spheres (disks): the advancing front over centres and radii,
-// the void filling the scene may ask for (`densify:`), then every figure of `frontpack analyze`
+// `frontpack pack` for a scene of spheres (disks): the advancing front over centres and radii (or
+// paper 000's fill of a tetrahedral mesh, whose step 7b is the void filling), the void filling
+// the scene may ask for (`densify:`), then every figure of `frontpack analyze`
 // (the independent validation included). `frontpack densify` runs the same stage on a packing
 // read from a file.
 #include <optional>
@@ -9,17 +10,19 @@
 #include "cli/pack_check.hpp"
 #include "core/io/scene.hpp"
 #include "densify/void_filling.hpp"
+#include "fill/tet_mesh_fill.hpp"
 #include "front/pack_result.hpp"
 
 namespace fp {
 
 class BlockExchange;
 
-/// A packing of spheres and how it was made: by the front, or given (frontpack densify); then
-/// perhaps filled.
+/// A packing of spheres and how it was made: by the front, the tetrahedral-mesh fill, or given
+/// (frontpack densify); then perhaps its voids filled.
 template <int D>
 struct SphereRun : PackResult<D> {
   bool given = false;                            ///< read from a file, not packed
+  std::optional<TetFillReport> tet_filled;       ///< packed by the tetrahedral-mesh fill (steps 2-7a)
   std::optional<VoidFillingReport> densified;    ///< the void filling, when the scene asks for it
 };
 

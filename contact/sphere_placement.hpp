@@ -109,6 +109,9 @@ class SpherePlacement {
     return free;
   }
 
+  /// The contacts a sphere needs from now on.
+  void set_z_min(int z_min) { z_min_ = z_min; }
+
   const PlacementRejections& rejections() const { return rej_; }
   /// The deepest overlap of a placed sphere with another, when it was placed.
   double deepest_overlap() const { return deepest_; }

@@ -5,11 +5,13 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/geometry/container.hpp"
+#include "core/geometry/tet_mesh.hpp"
 #include "core/sampling/radius_distribution.hpp"
 
 namespace fp {
@@ -60,8 +62,19 @@ inline double blocks_along(double size, double r_max, double edge) {
   return std::clamp(std::round(size / edge), 1.0, std::max(1.0, fit));
 }
 
+/// The tetrahedral-mesh packer (fill/tet_mesh_fill.hpp, paper 000): its parameters besides the
+/// radius range (the scene's law) and phi0 / N0 (`stop:`).
+struct TetMeshOptions {
+  double overlap = 0.0;  ///< epsilon: overlap allowed between spheres, times r_min
+  int z_min = 3;         ///< contacts a sphere of the geometric procedure needs (walls count)
+  bool loose = false;    ///< skip steps 5 and 6 (a loose packing)
+};
+
 struct PackerOptions {
-  std::string method = "front";              ///< the advancing front (the only method of this issue)
+  /// "front": the advancing front; "tet_mesh": paper 000's packing of a tetrahedral mesh (a .msh
+  /// container), followed by its void filling (step 7b).
+  std::string method = "front";
+  TetMeshOptions tet_mesh;                   ///< method tet_mesh only
   FrontPick front_pick = FrontPick::ClosestToSeed;
   CandidateChoice candidate = CandidateChoice::ClosestToSeed;
   PairOrder pair_order = PairOrder::NearestFirst;
@@ -173,6 +186,8 @@ struct Scene {
   std::uint64_t seed = 1;
   ContainerPtr<2> container2;  ///< set when dimension == 2
   ContainerPtr<3> container3;  ///< set when dimension == 3
+  /// A container read from a Gmsh .msh file: its tetrahedra, in the container's local frame.
+  std::shared_ptr<const TetMesh> tet_mesh;
   /// The container of dimension D (null if the scene has the other dimension).
   template <int D>
   const Container<D>* container() const {

@@ -25,6 +25,7 @@
 #include "core/geometry/local_frame.hpp"
 #include "core/geometry/mesh_container.hpp"
 #include "core/geometry/polygon_container.hpp"
+#include "core/geometry/tet_mesh_container.hpp"
 #include "core/io/input_file.hpp"
 #include "core/io/output_format.hpp"
 #include "core/sampling/constant_radius.hpp"
@@ -89,6 +90,7 @@ struct Context {
   std::string file;
   std::filesystem::path folder;  // of the scene file: relative mesh paths start here
   std::vector<std::string>* read_files = nullptr;  // Scene::read_files: the mesh is added
+  std::shared_ptr<const TetMesh>* tet_mesh = nullptr;  // Scene::tet_mesh: set by a .msh container
 
   [[noreturn]] void fail(const YAML::Mark& m, const std::string& key, const std::string& message) const {
     const bool known = !m.is_null() && m.line >= 0;
@@ -385,7 +387,7 @@ ContainerPtr<2> parse_polygon(const Map& m, const std::optional<Vec2>& origin) {
 }
 
 ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx, const std::optional<Vec3>& origin) {
-  const Value file = m.get("file", "an STL, OFF or OBJ surface, relative to the scene file's folder");
+  const Value file = m.get("file", "an STL, OFF or OBJ surface or a Gmsh .msh tetrahedral mesh, relative to the scene file's folder");
   const std::string name = file.string();
   if (name.empty()) file.fail("must name a file");
   if (name.find('\0') != std::string::npos) file.fail("the file name contains a NUL byte");
@@ -406,6 +408,14 @@ ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx, const std::optional
   double scale = 1.0;
   if (auto s = m.find("scale")) scale = s->positive();
   if (ctx.read_files) ctx.read_files->push_back(resolved);
+  std::string extension = p.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (extension == ".msh")  // a tetrahedral mesh: its boundary is the container, its tetrahedra stay with the scene
+    return construct(m, [&]() -> ContainerPtr<3> {
+      TetMeshContainer read = read_tet_mesh_container(resolved, scale, origin);
+      if (ctx.tet_mesh) *ctx.tet_mesh = read.mesh;
+      return read.container;
+    }, "reading mesh '" + resolved + "'");
   return construct(m, [&]() -> ContainerPtr<3> { return MeshContainer::from_file(resolved, scale, FrameChoice::Local, origin); },
                    "reading mesh '" + resolved + "'");
 }
@@ -576,7 +586,8 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
                   std::map<std::string, SourceSpot>& spots) {
   const Map m = v.map();
   m.check_known({"method", "front", "candidate", "pair_order", "contact_bodies", "probe_smallest", "walls", "radius_pool", "contact_tolerance",
-                 "grid_cell_factor", "hierarchical_grid_ratio", "seed_point", "minimisation", "contact_solver", "threads", "block_edge"});
+                 "grid_cell_factor", "hierarchical_grid_ratio", "seed_point", "minimisation", "contact_solver", "threads", "block_edge",
+                 "overlap", "z_min", "loose"});
   if (auto x = m.find("contact_solver")) {
     if (!shapes)
       x->fail("used by particle templates only; this scene has spheres ('particles: {radius: ...}'), whose contacts are "
@@ -589,7 +600,26 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
               "('particles: {radius: ...}'), whose contacts are solved in closed form");
     parse_minimisation(*x, p.minimisation);
   }
-  if (auto x = m.find("method")) p.method = x->choice({"front"});
+  if (auto x = m.find("method")) {
+    p.method = x->choice({"front", "tet_mesh"});
+    spots["packer.method"] = x->spot();
+    if (p.method == "tet_mesh" && (D != 3 || shapes))
+      x->fail("the tetrahedral-mesh packer (paper 000) packs spheres in 3D: it needs dimension: 3 and 'particles: {radius: ...}'");
+  }
+  for (const char* key : {"overlap", "z_min", "loose"})
+    if (auto x = m.find(key); x && p.method != "tet_mesh")
+      x->fail("a parameter of the tetrahedral-mesh packer: needs 'method: tet_mesh'");
+  if (auto x = m.find("overlap")) {
+    const double e = x->number();
+    if (!(e >= 0 && e < 1)) x->fail("must be in [0, 1): the overlap allowed, times r_min (got " + x->node().Scalar() + ")");
+    p.tet_mesh.overlap = e;
+  }
+  if (auto x = m.find("z_min")) {
+    const std::uint64_t z = x->unsigned_integer();
+    if (z < 1 || z > 4) x->fail("must be an integer from 1 to 4 (got " + x->node().Scalar() + ")");
+    p.tet_mesh.z_min = static_cast<int>(z);
+  }
+  if (auto x = m.find("loose")) p.tet_mesh.loose = x->boolean();
   if (auto x = m.find("front")) {
     const std::string s = x->choice({"closest", "random", "fifo"});
     p.front_pick = s == "closest" ? FrontPick::ClosestToSeed : s == "random" ? FrontPick::Random : FrontPick::Fifo;
@@ -931,6 +961,9 @@ void parse_body(const Map& root, Scene& scene, const Context& ctx) {
   scene.spots["particles"] = particles_value.spot();
   const bool shapes = parse_particles<D>(particles_value, *container, scene);
   if (auto p = root.find("packer")) parse_packer<D>(*p, *container, shapes, scene.packer, scene.spots);
+  if (scene.packer.method == "tet_mesh" && !scene.tet_mesh)
+    root.find("packer")->map().find("method")->fail(
+        "the tetrahedral-mesh packer needs a tetrahedral mesh: container: {type: mesh, file: NAME.msh} (Gmsh, versions 2.2 or 4.1)");
   // A container more than kFarFrameExtent smallest particles across can never be filled (some
   // 10^16 particles): it is packed only around where growth starts, and there its own frame (its
   // centre) would leave coordinates of up to half its extent, too coarse for the contact
@@ -992,6 +1025,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
   scene.source_path = source_name;
   scene.source_text = text;
   ctx.read_files = &scene.read_files;
+  ctx.tet_mesh = &scene.tet_mesh;
   try {
     const Map root(ctx, doc, "", doc.Mark().is_null() ? start : doc.Mark());
     root.check_known({"dimension", "seed", "container", "particles", "packer", "stop", "densify", "output"});
