@@ -92,8 +92,12 @@ class TetFiller {
     Packing<3> kept;
     kept.origin = P_.origin;
     kept.reserve(P_.size());
+    const std::size_t mesh_spheres = rep_.edge_spheres + rep_.node_spheres;
     for (std::size_t i = 0; i < P_.size(); ++i)
-      if (C_.contains_ball(P_.centers[i], P_.radii[i], tol_)) kept.add(P_.centers[i], P_.radii[i]);
+      if (C_.contains_ball(P_.centers[i], P_.radii[i], tol_)) {
+        kept.add(P_.centers[i], P_.radii[i]);
+        rep_.mesh_spheres_kept += i < mesh_spheres;
+      }
     rep_.removed_boundary = P_.size() - kept.size();
     P_ = std::move(kept);
     rep_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -44,6 +44,7 @@ struct TetFillReport {
   std::uint64_t tet_spheres = 0;       ///< step 5
   std::uint64_t midway_spheres = 0;    ///< step 6
   std::uint64_t removed_boundary = 0;  ///< step 7a
+  std::uint64_t mesh_spheres_kept = 0; ///< spheres of steps 2-3 left after 7a: the packing's first ones
   std::uint64_t procedures = 0;        ///< geometric procedures run (4-sets)
   bool reached_target = false;         ///< phi0 or N0 stopped it
   double seconds = 0.0;

@@ -1,0 +1,107 @@
+// `frontpack pack` of a tetrahedral mesh (container {type: mesh, file: X.msh}, packer
+// {method: tet_mesh}: paper 000's steps 2-7b) end to end: the four encodings Gmsh wrote of one
+// mesh (MSH 2.2 and 4.1, ASCII and binary) pack byte-identically per encoding and pass `frontpack
+// validate`;
+// phi0 and N0 stop it; the front packs the same container too; bad meshes and misplaced keys
+// exit 2 naming the file and what is wrong, and write nothing.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cli_test_util.hpp"
+
+namespace fptest {
+namespace {
+
+std::string scene_for(const std::string& mesh, const std::string& extra = "packer: {method: tet_mesh}\n") {
+  return "dimension: 3\nseed: 2\ncontainer: {type: mesh, file: " + mesh +
+         "}\nparticles: {radius: {distribution: uniform, min: 0.01, max: 0.06}}\n" + extra;
+}
+
+TEST(CliTetMesh, EveryEncodingGmshWritesPacksTheSameSpheres) {
+  // Versions 2.2 and 4.1 give the same nodes and tetrahedra: the same spheres, byte for byte. Gmsh
+  // writes ASCII coordinates with 16 significant digits, binary ones exactly: the two differ in
+  // the last digits, and so do their packings (by a few spheres in thousands).
+  TempDir dir;
+  std::string csv[2];
+  for (const char* encoding : {"ascii", "binary"})
+    for (const char* version : {"v2.2", "v4.1"}) {
+      const std::string name = std::string("two_boxes_") + version + "_" + encoding;
+      write_bytes(dir.work() / "s.yaml", scene_for(source_path("tests/data/meshes/msh/" + name + ".msh")));
+      const RunResult r = run_frontpack(dir, "pack s.yaml -o out.csv");
+      ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+      EXPECT_NE(r.out.find("tet mesh       250 tetrahedra"), std::string::npos) << r.out;
+      EXPECT_NE(r.out.find("void filling   +"), std::string::npos) << r.out;
+      std::string& mine = csv[std::string(encoding) == "binary"];
+      const std::string out = read_bytes(dir.work() / "out.csv");
+      if (mine.empty()) mine = out;
+      EXPECT_EQ(out, mine) << name << " packs other spheres than the version 2.2 file of the same encoding";
+      const RunResult v = run_frontpack(dir, "validate out.csv --scene s.yaml --ks-alpha 0");
+      EXPECT_EQ(v.exit_code, 0) << name << ": " << v.out;
+    }
+  const double a = static_cast<double>(lines_of(csv[0]).size()), b = static_cast<double>(lines_of(csv[1]).size());
+  EXPECT_GT(a, 5000);
+  EXPECT_NEAR(a, b, 0.01 * a);
+}
+
+TEST(CliTetMesh, StopsAtTheTargetSolidFractionAndCount) {
+  TempDir dir;
+  const std::string mesh = source_path("tests/data/meshes/msh/cube_kuhn4.msh");
+  write_bytes(dir.work() / "phi.yaml", scene_for(mesh, "packer: {method: tet_mesh}\nstop: {volume_fraction: 0.55}\n"));
+  const RunResult phi = run_frontpack(dir, "pack phi.yaml -o phi.csv --record phi.json");
+  ASSERT_EQ(phi.exit_code, 0) << phi.err;
+  EXPECT_NE(phi.out.find("(stop: volume fraction"), std::string::npos) << phi.out;
+  const std::string rec = read_bytes(dir.work() / "phi.json");
+  const auto at = rec.find("\"volume_fraction_container\": ");
+  ASSERT_NE(at, std::string::npos);
+  const double vf = std::stod(rec.substr(at + 29));
+  EXPECT_GE(vf, 0.55);
+  EXPECT_LT(vf, 0.551) << "checked after every sphere";
+  write_bytes(dir.work() / "n.yaml", scene_for(mesh, "packer: {method: tet_mesh}\nstop: {particles: 3000}\n"));
+  ASSERT_EQ(run_frontpack(dir, "pack n.yaml -o n.csv -q").exit_code, 0);
+  EXPECT_EQ(lines_of(read_bytes(dir.work() / "n.csv")).size(), 3001u) << "a header and 3,000 spheres";
+}
+
+TEST(CliTetMesh, TheFrontPacksATetrahedralMeshsBoundaryToo) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", scene_for(source_path("tests/data/meshes/msh/cube_kuhn4.msh"), ""));
+  ASSERT_EQ(run_frontpack(dir, "pack s.yaml -o f.csv -q").exit_code, 0);
+  EXPECT_EQ(run_frontpack(dir, "validate f.csv --scene s.yaml").exit_code, 0);
+}
+
+TEST(CliTetMesh, BadMeshesAndMisplacedKeysExitTwoAndWriteNothing) {
+  TempDir dir;
+  const auto refused = [&](const std::string& scene, const std::string& message) {
+    write_bytes(dir.work() / "s.yaml", scene);
+    const RunResult r = run_frontpack(dir, "pack s.yaml -o out.csv");
+    EXPECT_EQ(r.exit_code, 2) << message << ": " << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir.work() / "out.csv")) << message;
+  };
+  // One tetrahedron, its last two nodes swapped: inverted.
+  const std::string head = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n";
+  write_bytes(dir.work() / "inverted.msh", head + "$Elements\n1\n1 4 2 1 1 1 2 4 3\n$EndElements\n");
+  refused(scene_for("inverted.msh"), "inverted.msh");
+  refused(scene_for("inverted.msh"), "inverted");
+  // A file that ends inside its nodes.
+  write_bytes(dir.work() / "short.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n");
+  refused(scene_for("short.msh"), "short.msh");
+  // A named volume without tetrahedra.
+  write_bytes(dir.work() / "empty.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n3 1 \"full\"\n3 2 \"empty\"\n"
+                                        "$EndPhysicalNames\n" + head.substr(head.find("$Nodes")) +
+                                        "$Elements\n1\n1 4 2 1 1 1 2 3 4\n$EndElements\n");
+  refused(scene_for("empty.msh"), "empty");
+  // The packer needs a tetrahedral mesh; its parameters need the packer.
+  refused("dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [1, 1, 1]}\n"
+          "particles: {radius: {distribution: uniform, min: 0.01, max: 0.06}}\npacker: {method: tet_mesh}\n",
+          "needs a tetrahedral mesh");
+  refused(scene_for(source_path("tests/data/meshes/msh/cube_kuhn4.msh"), "packer: {z_min: 3}\n"), "needs 'method: tet_mesh'");
+  refused(scene_for(source_path("tests/data/meshes/msh/cube_kuhn4.msh"), "packer: {method: tet_mesh, z_min: 5}\n"),
+          "from 1 to 4");
+  refused("dimension: 2\ncontainer: {type: rectangle, min: [0, 0], max: [1, 1]}\n"
+          "particles: {radius: {distribution: uniform, min: 0.01, max: 0.06}}\npacker: {method: tet_mesh}\n",
+          "in 3D");
+}
+
+}  // namespace
+}  // namespace fptest
