@@ -1,10 +1,21 @@
 #include "cli/pack_check.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "core/io/analysis_json.hpp"
+#include "core/sampling/uniform_radius.hpp"
 
 namespace fp {
+
+RadiusDistributionPtr radii_to_check(const Scene& scene) {
+  RadiusDistributionPtr law = scene.radii;
+  if (!law || scene.regions.empty()) return law;
+  double lo = law->r_min(), hi = law->r_max();
+  for (const RegionSpec& r : scene.regions)
+    if (r.radii) lo = std::min(lo, r.radii->r_min()), hi = std::max(hi, r.radii->r_max());
+  return lo < hi ? std::make_shared<const UniformRadius>(lo, hi) : law;
+}
 
 PackCheck pack_check_of(const ValidationReport& validation, double volume_fraction) {
   PackCheck c;

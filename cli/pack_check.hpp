@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/metrics/packing_analysis.hpp"
+#include "core/io/scene.hpp"
 #include "core/metrics/validate.hpp"
 
 namespace fp {
@@ -29,6 +30,11 @@ struct PackCheck {
   std::string analysis_json;      ///< the full analysis (analysis_json.hpp), embedded in the record
   std::string summary_lines;      ///< the analysis' table, then the kind's own lines, each "  name  value\n"
 };
+
+/// The law a packing of spheres of `scene` is checked against (`pack` and `validate` alike): the
+/// scene's, or with regions of laws of their own the uniform law over all their ranges (only the
+/// range is then tested: their radii come from the voids).
+RadiusDistributionPtr radii_to_check(const Scene& scene);
 
 /// The record's figures of an analysis (its validation included) and its table as summary lines.
 PackCheck pack_check_of(const PackingAnalysis& analysis);

@@ -1,9 +1,12 @@
 #include "cli/sphere_pack.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <string>
 
+#include "core/geometry/tet_locator.hpp"
 #include "core/metrics/packing_analysis.hpp"
 #include "core/metrics/validate.hpp"
 #include "core/system/parallel_parts.hpp"
@@ -13,30 +16,57 @@
 namespace fp {
 namespace {
 
-/// The scene's void filling on `run.packing`: what it adds is checked with the rest, with the
-/// overlap it allows as the tolerance.
 template <int D>
-void fill(const Scene& scene, const DensifyOptions& options, SphereRun<D>& run) {
-  run.densified = fill_voids<D>(run.packing, *scene.container<D>(), *scene.radii, options, scene.seed, run.contact_tolerance);
-  run.seconds += run.densified->seconds;
-  run.solid_measure = run.densified->solid_after;
+double solid_of(const Packing<D>& p) {
+  double s = 0;
+  for (const double r : p.radii) s += D == 3 ? 4.0 / 3.0 * std::numbers::pi * r * r * r : std::numbers::pi * r * r;
+  return s;
+}
+
+/// The scene's void filling on `run.packing` with `law` (in `region` only, when given): what it
+/// adds is checked with the rest, with the overlap it allows as the tolerance. A second call (the
+/// next region) adds to the first's report.
+template <int D>
+void fill(const Scene& scene, const DensifyOptions& options, SphereRun<D>& run, const RadiusDistribution& law,
+          const VoidRegion<D>* region = nullptr, std::uint64_t stream = 0) {
+  const double before = solid_of(run.packing);
+  VoidFillingReport r = fill_voids<D>(run.packing, *scene.container<D>(), law, options, scene.seed + stream,
+                                      run.contact_tolerance, region);
+  run.seconds += r.seconds;
+  r.solid_before = before;  // of the whole packing, whatever the region
+  r.solid_after = run.solid_measure = solid_of(run.packing);
+  if (run.densified) {
+    r.solid_before = run.densified->solid_before;
+    *run.densified += r;
+  } else {
+    run.densified = r;
+  }
   run.contact_tolerance = std::max(run.contact_tolerance, options.overlap);
 }
 
 /// Paper 000: steps 2-7a on the scene's tetrahedral mesh, then step 7b, the void filling with the
 /// voids' own radii, the packer's epsilon and z_min, stopped by phi0 or N0 (unless the scene's
-/// `densify:` says otherwise).
+/// `densify:` says otherwise); region by region when the scene has regions (index 0: the
+/// tetrahedra of no region, with the scene's law and stop).
 void fill_tet_mesh(const Scene& scene, SphereRun<3>& run) {
   const TetMeshOptions& t = scene.packer.tet_mesh;
+  const TetMesh& mesh = *scene.tet_mesh;
   TetFillOptions o;
   o.overlap = t.overlap;
   o.z_min = t.z_min;
   o.loose = t.loose;
   o.target_volume_fraction = scene.stop.target_volume_fraction;
   o.max_particles = scene.stop.max_particles;
+  if (!scene.regions.empty()) {
+    o.regions.push_back({});
+    for (const RegionSpec& r : scene.regions) o.regions.push_back({r.radii.get(), r.target_volume_fraction});
+    o.tet_region.assign(mesh.tets.size(), 0);
+    for (std::size_t k = 0; k < mesh.tets.size(); ++k)
+      for (std::size_t g = 0; g < scene.regions.size(); ++g)
+        if (mesh.tet_group[k] == scene.regions[g].tag) o.tet_region[k] = static_cast<int>(g + 1);
+  }
   run.contact_tolerance = scene.packer.contact_tolerance;
-  run.tet_filled = fp::fill_tet_mesh(*scene.tet_mesh, *scene.container3, *scene.radii, o, scene.seed, run.contact_tolerance,
-                                     run.packing);
+  run.tet_filled = fp::fill_tet_mesh(mesh, *scene.container3, *scene.radii, o, scene.seed, run.contact_tolerance, run.packing);
   run.seconds = run.tet_filled->seconds;
   DensifyOptions step_7b;
   step_7b.radii = VoidRadii::Fit;
@@ -44,7 +74,25 @@ void fill_tet_mesh(const Scene& scene, SphereRun<3>& run) {
   step_7b.z_min = t.z_min;
   step_7b.target_volume_fraction = o.target_volume_fraction;
   step_7b.max_particles = o.max_particles;
-  fill<3>(scene, scene.densify.value_or(step_7b), run);
+  const DensifyOptions base = scene.densify.value_or(step_7b);
+  if (scene.regions.empty()) {
+    fill<3>(scene, base, run, *scene.radii);
+  } else {
+    const TetLocator locator(mesh);
+    std::vector<double> volume(o.regions.size(), 0.0);
+    for (std::size_t k = 0; k < mesh.tets.size(); ++k) volume[static_cast<std::size_t>(o.tet_region[k])] += tet_volume(mesh, k);
+    for (std::size_t g = 0; g < o.regions.size(); ++g) {
+      if (!(volume[g] > 0)) continue;
+      VoidRegion<3> where{[&, g](const Vec3& x) {
+                            const int k = locator.tet_at(x);
+                            return k >= 0 && static_cast<std::size_t>(o.tet_region[static_cast<std::size_t>(k)]) == g;
+                          },
+                          volume[g]};
+      DensifyOptions d = base;
+      if (o.regions[g].target_volume_fraction) d.target_volume_fraction = o.regions[g].target_volume_fraction;
+      fill<3>(scene, d, run, o.regions[g].radii ? *o.regions[g].radii : *scene.radii, &where, g);
+    }
+  }
   if (run.densified->stop == VoidFillingStop::VolumeFraction) run.stop = StopReason::VolumeFraction;
   else if (run.densified->stop == VoidFillingStop::ParticleCount) run.stop = StopReason::ParticleCount;
 }
@@ -62,7 +110,7 @@ typename SpherePack<D>::Result SpherePack<D>::pack(const Scene& scene, const Pro
   }
   static_cast<PackResult<D>&>(run) = fp::pack<D>(scene, progress, exchange);
   const bool root = !exchange || exchange->process() == 0;  // the others hold no packing
-  if (scene.densify && root) fill<D>(scene, *scene.densify, run);
+  if (scene.densify && root) fill<D>(scene, *scene.densify, run, *scene.radii);
   return run;
 }
 
@@ -72,7 +120,7 @@ typename SpherePack<D>::Result SpherePack<D>::densify(const Scene& scene, Packin
   run.given = true;
   run.packing = std::move(packing);
   run.contact_tolerance = scene.packer.contact_tolerance;
-  fill<D>(scene, scene.densify.value_or(DensifyOptions{}), run);
+  fill<D>(scene, scene.densify.value_or(DensifyOptions{}), run, *scene.radii);
   return run;
 }
 
@@ -94,14 +142,50 @@ PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth
   options.contact_tolerance = res.contact_tolerance;
   options.threads = thread_count(scene.packer.threads);
   // Radii the voids gave (paper 000) are asked to lie in the range only; their law is reported.
-  const bool fitted = res.tet_filled || (res.densified && scene.densify && scene.densify->radii == VoidRadii::Fit);
+  const bool fitted = res.tet_filled || !scene.regions.empty() || (res.densified && scene.densify && scene.densify->radii == VoidRadii::Fit);
   options.radii_alpha = fitted ? 0.0 : kRadiiAlpha;
+  const RadiusDistributionPtr law = radii_to_check(scene);
   PackCheck c = depth == CheckDepth::Analysis
-                    ? pack_check_of(analyze_packing<D>(res.packing, &container, scene.radii.get(), options))
-                    : pack_check_of(validate_packing<D>(res.packing, container, scene.radii.get(), res.contact_tolerance,
+                    ? pack_check_of(analyze_packing<D>(res.packing, &container, law.get(), options))
+                    : pack_check_of(validate_packing<D>(res.packing, container, law.get(), res.contact_tolerance,
                                                         options.radii_alpha, nullptr, options.threads),
                                     res.solid_measure / container.measure());
   c.counters.emplace_back("grid_bytes", res.grid_bytes);
+  if constexpr (D == 3) {
+    if (!scene.regions.empty() && scene.tet_mesh) {  // each region's solid fraction (spheres by their centres)
+      const TetMesh& mesh = *scene.tet_mesh;
+      const TetLocator locator(mesh);
+      std::vector<double> volume(scene.regions.size() + 1, 0.0), solid(volume.size(), 0.0);
+      std::vector<std::uint64_t> count(volume.size(), 0);
+      const auto region_of_tet = [&](int k) {
+        if (k < 0) return std::size_t{0};
+        for (std::size_t g = 0; g < scene.regions.size(); ++g)
+          if (mesh.tet_group[static_cast<std::size_t>(k)] == scene.regions[g].tag) return g + 1;
+        return std::size_t{0};
+      };
+      for (std::size_t k = 0; k < mesh.tets.size(); ++k) volume[region_of_tet(static_cast<int>(k))] += tet_volume(mesh, k);
+      for (std::size_t i = 0; i < res.packing.size(); ++i) {
+        const std::size_t g = region_of_tet(locator.tet_at(res.packing.centers[i]));
+        const double r = res.packing.radii[i];
+        solid[g] += 4.0 / 3.0 * std::numbers::pi * r * r * r;
+        ++count[g];
+      }
+      for (std::size_t g = 0; g < volume.size(); ++g) {
+        if (!(volume[g] > 0)) continue;
+        const std::string name = g == 0 ? "(no region)" : scene.regions[g - 1].name;
+        const std::optional<double> target = g == 0 ? scene.stop.target_volume_fraction
+                                                    : scene.regions[g - 1].target_volume_fraction
+                                                          ? scene.regions[g - 1].target_volume_fraction
+                                                          : scene.stop.target_volume_fraction;
+        char line[240];
+        std::snprintf(line, sizeof line, "  region         %s: volume fraction %.4f%s, %llu spheres (by their centres)\n", name.c_str(),
+                      solid[g] / volume[g], target ? (" (target " + std::to_string(*target).substr(0, 6) + ")").c_str() : "",
+                      static_cast<unsigned long long>(count[g]));
+        c.summary_lines += line;
+        c.metrics.emplace_back("region_" + name + "_volume_fraction", solid[g] / volume[g]);
+      }
+    }
+  }
   if (const auto& t = res.tet_filled) {
     char line[400];
     std::snprintf(line, sizeof line,

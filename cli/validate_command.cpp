@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/failure_report.hpp"
+#include "cli/pack_check.hpp"
 #include "cli/packing_input.hpp"
 #include "cli/run_record_start.hpp"
 #include "contact/shape_validation.hpp"
@@ -67,7 +68,7 @@ int report(const Scene& scene, const ValidationReport& r, const ValidateCommandO
 template <int D>
 int validate(const Scene& scene, const Packing<D>& P, const ValidateCommandOptions& o) {
   const double tol = o.tolerance >= 0 ? o.tolerance : scene.packer.contact_tolerance;
-  return report<D>(scene, validate_packing<D>(P, *scene.container<D>(), scene.radii.get(), tol, o.ks_alpha, nullptr,
+  return report<D>(scene, validate_packing<D>(P, *scene.container<D>(), radii_to_check(scene).get(), tol, o.ks_alpha, nullptr,
                                                  thread_count(o.threads)),
                    o);
 }

@@ -39,7 +39,9 @@ class SpherePlacement {
   /// sphere beyond the allowance (with `may_reduce`: after reducing r to cancel such overlaps,
   /// and the protrusion out of the container) with r >= r_min, and has z_min contacts. Returns
   /// whether it was added; r is the radius it got.
-  bool try_place(const Vec<D>& x, double& r, bool may_reduce) {
+  bool try_place(const Vec<D>& x, double& r, bool may_reduce) { return try_place(x, r, may_reduce, r_min_); }
+  /// The same with the smallest radius of its own (a region's law).
+  bool try_place(const Vec<D>& x, double& r, bool may_reduce, double r_min) {
     ++rej_.tried;
     bool reduced = false;
     double wall_gap = 0;  // (distance to the boundary) - r, when there is a container
@@ -77,7 +79,7 @@ class SpherePlacement {
       r = limit;
       reduced = true;
     }
-    if (r < r_min_ * (1 - 1e-12)) {
+    if (r < r_min * (1 - 1e-12)) {
       ++rej_.contacts;
       return false;
     }

@@ -25,6 +25,7 @@
 // the solver's rounding and overlaps nothing beyond the contact tolerance.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 
 #include "core/geometry/container.hpp"
 #include "core/geometry/packing.hpp"
@@ -57,14 +58,29 @@ struct VoidFillingReport {
   double max_overlap_over_r_min = 0.0; ///< largest overlap of a new sphere with any other, / r_min (<= epsilon)
   double seconds = 0.0;                ///< the whole stage
   double triangulation_seconds = 0.0;  ///< of which the triangulations
+
+  /// Another run's (the next region's) added: counts and times summed, its stop, the deeper
+  /// overlap; solid_after becomes its.
+  VoidFillingReport& operator+=(const VoidFillingReport& o);
+};
+
+/// Void filling confined to a region (a physical volume of a tetrahedral mesh, paper 000's
+/// "applied only to a given region"): only the voids whose room's centre it contains are
+/// filled, and phi0 is the volume of the spheres centred in it over its measure.
+template <int D>
+struct VoidRegion {
+  std::function<bool(const Vec<D>&)> contains;
+  double measure = 0.0;
 };
 
 /// Adds spheres into the voids of `packing` (centres in `container`'s local frame), from `dist`
 /// (its law in distribution mode; its range in fit mode) with the options; draws from a stream
 /// of its own for `seed`. `contact_tolerance` (relative to the smaller radius) is what counts as
-/// touching. The same inputs give the same spheres, byte for byte.
+/// touching. The same inputs give the same spheres, byte for byte. With a `region`, solid_before /
+/// solid_after are the region's.
 template <int D>
 VoidFillingReport fill_voids(Packing<D>& packing, const Container<D>& container, const RadiusDistribution& dist,
-                             const DensifyOptions& options, std::uint64_t seed, double contact_tolerance);
+                             const DensifyOptions& options, std::uint64_t seed, double contact_tolerance,
+                             const VoidRegion<D>* region = nullptr);
 
 }  // namespace fp

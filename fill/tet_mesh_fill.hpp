@@ -16,9 +16,11 @@
 //   7a    the spheres not inside the mesh's boundary removed. The paper marks the boundary with
 //         virtual spheres tangent to the boundary faces; the container's exact distance does
 //         the same without the spheres' approximation of a plane.
-// The target solid fraction phi0 and count N0 are checked after every sphere of steps 4-6.
+// The target solid fraction phi0 and count N0 are checked after every sphere of steps 4-6; with
+// regions (physical volumes of their own law and phi0), each region's.
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "core/geometry/container.hpp"
 #include "core/geometry/packing.hpp"
@@ -27,12 +29,23 @@
 
 namespace fp {
 
+/// A region of the mesh with laws of its own.
+struct TetRegion {
+  const RadiusDistribution* radii = nullptr;     ///< its law; null: the fill's
+  std::optional<double> target_volume_fraction;  ///< its phi0 (solid of the spheres aimed in it / its volume)
+};
+
 struct TetFillOptions {
   double overlap = 0.0;  ///< epsilon: overlap allowed between spheres, times r_min
   int z_min = 3;         ///< contacts a sphere of steps 4-6 needs
   bool loose = false;    ///< skip steps 5 and 6 (the paper: phi about 0.45 instead of 0.55)
   std::optional<double> target_volume_fraction;  ///< phi0
   std::optional<std::uint64_t> max_particles;    ///< N0
+  /// Regions: tetrahedron t is in regions[tet_region[t]]; a sphere takes the region of the
+  /// tetrahedron it is aimed from (an edge, node or face: the first tetrahedron that has it).
+  /// Empty: one region, the fill's law and phi0.
+  std::vector<TetRegion> regions;
+  std::vector<int> tet_region;
 };
 
 struct TetFillReport {

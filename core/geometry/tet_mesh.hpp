@@ -3,11 +3,15 @@
 // mesh): nodes, linear tetrahedra and the triangles the file lists (boundary or interface
 // faces), each with the physical group it belongs to, and the groups' names.
 #include <array>
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <Eigen/Geometry>
 
 #include "core/geometry/vec.hpp"
 
@@ -22,5 +26,12 @@ struct TetMesh {
   /// (dimension, tag) -> name, for the physical groups the file names.
   std::map<std::pair<int, int>, std::string> group_names;
 };
+
+/// The volume of tetrahedron t.
+inline double tet_volume(const TetMesh& mesh, std::size_t t) {
+  const auto& v = mesh.tets[t];
+  const Vec3& a = mesh.nodes[v[0]];
+  return std::abs((mesh.nodes[v[1]] - a).cross(mesh.nodes[v[2]] - a).dot(mesh.nodes[v[3]] - a)) / 6.0;
+}
 
 }  // namespace fp

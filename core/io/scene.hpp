@@ -130,6 +130,16 @@ struct DensifyOptions {
   std::optional<std::uint64_t> max_particles;    ///< N0: stop once the packing holds this many
 };
 
+/// A physical volume of a tetrahedral mesh with laws of its own (`regions:`, paper 000: "by
+/// defining different regions with different solid fractions it is thus possible to obtain a
+/// gradient of density").
+struct RegionSpec {
+  std::string name;                               ///< the physical volume's name (or its tag) in the mesh file
+  int tag = 0;                                    ///< its physical tag
+  RadiusDistributionPtr radii;                    ///< its radius law; null: the scene's
+  std::optional<double> target_volume_fraction;   ///< its phi0; unset: the scene's stop
+};
+
 /// Where a value was written in the scene file, so that errors found later (shape families are
 /// resolved in shapes/, above core/) still name the file, line and key (SceneError).
 struct SourceSpot {
@@ -201,6 +211,7 @@ struct Scene {
   PackerOptions packer;
   StopCriteria stop;
   std::optional<DensifyOptions> densify;  ///< void filling after the packer (spheres only)
+  std::vector<RegionSpec> regions;        ///< method tet_mesh: physical volumes with laws of their own
   std::vector<OutputSpec> outputs;
   /// Every file the scene was read from (itself, a mesh): no output may replace them.
   std::vector<std::string> read_files;

@@ -745,6 +745,43 @@ void parse_densify(const Value& v, int dimension, bool shapes, DensifyOptions& d
   }
 }
 
+/// `regions: {NAME: {radius: LAW, volume_fraction: PHI0}, ...}`: physical volumes of the scene's
+/// tetrahedral mesh, by name or tag.
+void parse_regions(const Value& v, Scene& scene) {
+  if (!scene.tet_mesh) v.fail("regions are physical volumes of a tetrahedral mesh: container: {type: mesh, file: NAME.msh}");
+  if (scene.packer.method != "tet_mesh") v.fail("regions are filled by the tetrahedral-mesh packer: needs 'packer: {method: tet_mesh}'");
+  const Map m = v.map();
+  std::vector<std::string> names;
+  for (const auto& [key, name] : scene.tet_mesh->group_names)
+    if (key.first == 3) names.push_back(name + " (" + std::to_string(key.second) + ")");
+  for (const std::string& name : m.keys()) {
+    const Value entry = *m.find(name);
+    RegionSpec r;
+    r.name = name;
+    r.tag = -1;
+    for (const auto& [key, given] : scene.tet_mesh->group_names)
+      if (key.first == 3 && given == name) r.tag = key.second;
+    if (r.tag < 0 && !name.empty() && name.find_first_not_of("0123456789") == std::string::npos && name.size() < 10) {
+      const int tag = std::stoi(name);
+      if (std::find(scene.tet_mesh->tet_group.begin(), scene.tet_mesh->tet_group.end(), tag) != scene.tet_mesh->tet_group.end())
+        r.tag = tag;
+    }
+    if (r.tag < 0)
+      entry.fail("no physical volume of that name or tag in the mesh; it has: " + (names.empty() ? std::string("none") : join(names)));
+    for (const RegionSpec& other : scene.regions)
+      if (other.tag == r.tag) entry.fail("the same physical volume as region '" + other.name + "'");
+    const Map e = entry.map();
+    e.check_known({"radius", "volume_fraction"});
+    if (auto x = e.find("radius")) r.radii = parse_distribution(*x, 3);
+    if (auto x = e.find("volume_fraction")) {
+      const double phi = x->number();
+      if (!(phi > 0 && phi < 1)) x->fail("must be in (0, 1) (got " + x->node().Scalar() + ")");
+      r.target_volume_fraction = phi;
+    }
+    scene.regions.push_back(std::move(r));
+  }
+}
+
 std::vector<OutputSpec> parse_outputs(const Value& v) {
   if (!v.node().IsSequence()) v.fail("expected a list of {format, path} entries, got " + shown(v.node()));
   std::vector<OutputSpec> out;
@@ -1028,7 +1065,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
   ctx.tet_mesh = &scene.tet_mesh;
   try {
     const Map root(ctx, doc, "", doc.Mark().is_null() ? start : doc.Mark());
-    root.check_known({"dimension", "seed", "container", "particles", "packer", "stop", "densify", "output"});
+    root.check_known({"dimension", "seed", "container", "particles", "packer", "stop", "densify", "regions", "output"});
     const Value dim = root.get("dimension", "2 or 3");
     const std::uint64_t d = dim.unsigned_integer();
     if (d != 2 && d != 3) dim.fail("must be 2 or 3 (got " + dim.node().Scalar() + ")");
@@ -1039,6 +1076,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
     if (auto s = root.find("stop")) parse_stop(*s, scene.stop, scene.spots);
     if (auto d = root.find("densify"))
       parse_densify(*d, scene.dimension, !scene.particle_templates.empty(), scene.densify.emplace(), scene.spots);
+    if (auto r = root.find("regions")) parse_regions(*r, scene);
     if (auto o = root.find("output")) scene.outputs = parse_outputs(*o);
   } catch (const YAML::Exception& e) {  // not expected: every access is checked first
     ctx.fail(e.mark, "", e.msg);

@@ -6,7 +6,9 @@
 // exit 2 naming the file and what is wrong, and write nothing.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "cli_test_util.hpp"
 
@@ -69,6 +71,38 @@ TEST(CliTetMesh, TheFrontPacksATetrahedralMeshsBoundaryToo) {
   EXPECT_EQ(run_frontpack(dir, "validate f.csv --scene s.yaml").exit_code, 0);
 }
 
+TEST(CliTetMesh, RegionsKeepTheirOwnRadiiAndSolidFraction) {
+  // The two physical volumes Gmsh wrote (lower z < 0.5, upper z > 0.5): the upper one with smaller
+  // spheres and a lower solid fraction.
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml",
+              scene_for(source_path("tests/data/meshes/msh/two_boxes_v4.1_binary.msh"),
+                        "packer: {method: tet_mesh}\nregions:\n  upper: {radius: {distribution: uniform, min: 0.005, max: 0.03}, "
+                        "volume_fraction: 0.45}\n  lower: {volume_fraction: 0.55}\n"));
+  const RunResult r = run_frontpack(dir, "pack s.yaml -o out.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* line : {"region         upper: volume fraction 0.45", "region         lower: volume fraction 0.55"})
+    EXPECT_NE(r.out.find(line), std::string::npos) << line << " in\n" << r.out;
+  std::size_t upper = 0, lower = 0;
+  for (const std::string& line : lines_of(read_bytes(dir.work() / "out.csv"))) {
+    std::vector<double> v;
+    if (!parse_numbers(line, ',', v) || v.size() != 5) continue;
+    const double z = v[3], radius = v[4];
+    if (std::abs(z - 0.5) <= 1e-9) continue;  // on the interface: either region's
+    if (z > 0.5) {
+      ++upper;
+      EXPECT_GE(radius, 0.005);
+      EXPECT_LE(radius, 0.03) << "a sphere centred in the upper region has its law";
+    } else {
+      ++lower;
+      EXPECT_GE(radius, 0.01) << "a sphere centred in the lower region has the scene's law";
+      EXPECT_LE(radius, 0.06);
+    }
+  }
+  EXPECT_GT(upper, 3 * lower) << "smaller spheres above";
+  EXPECT_EQ(run_frontpack(dir, "validate out.csv --scene s.yaml --ks-alpha 0").exit_code, 0);
+}
+
 TEST(CliTetMesh, BadMeshesAndMisplacedKeysExitTwoAndWriteNothing) {
   TempDir dir;
   const auto refused = [&](const std::string& scene, const std::string& message) {
@@ -98,6 +132,11 @@ TEST(CliTetMesh, BadMeshesAndMisplacedKeysExitTwoAndWriteNothing) {
   refused(scene_for(source_path("tests/data/meshes/msh/cube_kuhn4.msh"), "packer: {z_min: 3}\n"), "needs 'method: tet_mesh'");
   refused(scene_for(source_path("tests/data/meshes/msh/cube_kuhn4.msh"), "packer: {method: tet_mesh, z_min: 5}\n"),
           "from 1 to 4");
+  const std::string boxes = source_path("tests/data/meshes/msh/two_boxes_v2.2_ascii.msh");
+  refused(scene_for(boxes, "packer: {method: tet_mesh}\nregions: {middle: {volume_fraction: 0.5}}\n"), "lower (11), upper (12)");
+  refused(scene_for(boxes, "regions: {upper: {volume_fraction: 0.5}}\n"), "needs 'packer: {method: tet_mesh}'");
+  refused(scene_for(boxes, "packer: {method: tet_mesh}\nregions: {upper: {volume_fraction: 1.5}}\n"), "regions.upper.volume_fraction");
+  refused(scene_for(boxes, "packer: {method: tet_mesh}\nregions: {upper: {}, \"12\": {}}\n"), "the same physical volume");
   refused("dimension: 2\ncontainer: {type: rectangle, min: [0, 0], max: [1, 1]}\n"
           "particles: {radius: {distribution: uniform, min: 0.01, max: 0.06}}\npacker: {method: tet_mesh}\n",
           "in 3D");
