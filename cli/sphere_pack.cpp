@@ -72,6 +72,7 @@ void fill_tet_mesh(const Scene& scene, SphereRun<3>& run) {
   step_7b.radii = VoidRadii::Fit;
   step_7b.overlap = t.overlap;
   step_7b.z_min = t.z_min;
+  step_7b.fallback_r_min = t.fallback_r_min;
   step_7b.target_volume_fraction = o.target_volume_fraction;
   step_7b.max_particles = o.max_particles;
   const DensifyOptions base = scene.densify.value_or(step_7b);
@@ -151,6 +152,16 @@ PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth
                                                         options.radii_alpha, nullptr, options.threads),
                                     res.solid_measure / container.measure());
   c.counters.emplace_back("grid_bytes", res.grid_bytes);
+  // A target solid fraction above what the packer reached is said, with why it stopped.
+  std::optional<double> phi0 = scene.stop.target_volume_fraction;
+  if (res.densified && scene.densify && scene.densify->target_volume_fraction) phi0 = scene.densify->target_volume_fraction;
+  if (phi0 && scene.regions.empty() && res.solid_measure / container.measure() < *phi0) {
+    char line[200];
+    std::snprintf(line, sizeof line, "  target         volume fraction %.4g not reached: %.4f (stop: %s)\n", *phi0,
+                  res.solid_measure / container.measure(), stop_text(res).c_str());
+    c.summary_lines += line;
+    c.info.emplace_back("target_volume_fraction", "not reached");
+  }
   if constexpr (D == 3) {
     if (!scene.regions.empty() && scene.tet_mesh) {  // each region's solid fraction (spheres by their centres)
       const TetMesh& mesh = *scene.tet_mesh;

@@ -68,6 +68,7 @@ struct TetMeshOptions {
   double overlap = 0.0;  ///< epsilon: overlap allowed between spheres, times r_min
   int z_min = 3;         ///< contacts a sphere of the geometric procedure needs (walls count)
   bool loose = false;    ///< skip steps 5 and 6 (a loose packing)
+  bool fallback_r_min = false;  ///< step 7b: DensifyOptions::fallback_r_min
 };
 
 struct PackerOptions {
@@ -126,6 +127,9 @@ struct DensifyOptions {
   double overlap = 0.0;   ///< epsilon: overlap allowed between spheres, times the distribution's r_min (paper 000: delta_max = epsilon r_min)
   int z_min = 0;          ///< contacts (walls count) a new sphere needs; 0: the dimension
   int rounds = 0;         ///< triangulations at most; 0: until one adds nothing
+  /// Fit: a void whose own sphere does not go in (overlapping, or reduced below r_min) takes a
+  /// sphere of r_min touching D of its bodies: denser, with many more spheres of r_min.
+  bool fallback_r_min = false;
   std::optional<double> target_volume_fraction;  ///< phi0: stop once the packing reaches it (checked after every sphere)
   std::optional<std::uint64_t> max_particles;    ///< N0: stop once the packing holds this many
 };

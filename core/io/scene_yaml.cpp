@@ -587,7 +587,7 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
   const Map m = v.map();
   m.check_known({"method", "front", "candidate", "pair_order", "contact_bodies", "probe_smallest", "walls", "radius_pool", "contact_tolerance",
                  "grid_cell_factor", "hierarchical_grid_ratio", "seed_point", "minimisation", "contact_solver", "threads", "block_edge",
-                 "overlap", "z_min", "loose"});
+                 "overlap", "z_min", "loose", "fallback_r_min"});
   if (auto x = m.find("contact_solver")) {
     if (!shapes)
       x->fail("used by particle templates only; this scene has spheres ('particles: {radius: ...}'), whose contacts are "
@@ -606,7 +606,7 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
     if (p.method == "tet_mesh" && (D != 3 || shapes))
       x->fail("the tetrahedral-mesh packer (paper 000) packs spheres in 3D: it needs dimension: 3 and 'particles: {radius: ...}'");
   }
-  for (const char* key : {"overlap", "z_min", "loose"})
+  for (const char* key : {"overlap", "z_min", "loose", "fallback_r_min"})
     if (auto x = m.find(key); x && p.method != "tet_mesh")
       x->fail("a parameter of the tetrahedral-mesh packer: needs 'method: tet_mesh'");
   if (auto x = m.find("overlap")) {
@@ -620,6 +620,7 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
     p.tet_mesh.z_min = static_cast<int>(z);
   }
   if (auto x = m.find("loose")) p.tet_mesh.loose = x->boolean();
+  if (auto x = m.find("fallback_r_min")) p.tet_mesh.fallback_r_min = x->boolean();
   if (auto x = m.find("front")) {
     const std::string s = x->choice({"closest", "random", "fifo"});
     p.front_pick = s == "closest" ? FrontPick::ClosestToSeed : s == "random" ? FrontPick::Random : FrontPick::Fifo;
@@ -708,7 +709,8 @@ void parse_densify(const Value& v, int dimension, bool shapes, DensifyOptions& d
   spots["densify"] = v.spot();
   if (v.node().IsNull()) return;  // `densify:` alone: every default
   const Map m = v.map();
-  m.check_known({"radii", "radius_pool", "overlap", "z_min", "rounds", "volume_fraction", "particles"});
+  m.check_known({"radii", "radius_pool", "overlap", "z_min", "rounds", "volume_fraction", "particles", "fallback_r_min"});
+  if (auto x = m.find("fallback_r_min")) d.fallback_r_min = x->boolean();
   if (auto x = m.find("radii")) d.radii = x->choice({"distribution", "fit"}) == "fit" ? VoidRadii::Fit : VoidRadii::Distribution;
   if (auto x = m.find("radius_pool")) {
     const std::uint64_t n = x->unsigned_integer();

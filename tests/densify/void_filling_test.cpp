@@ -121,6 +121,21 @@ TEST(VoidFilling, DistributionModeKeepsTheLawAndLeavesAtMostThePoolUnplaced) {
   EXPECT_GE(*std::min_element(z.begin(), z.end()), 3);
 }
 
+TEST(VoidFilling, FallbackToRMinFillsMoreVoidsWithSpheresOfRMin) {
+  const fp::Scene scene = scene_from_yaml(box_scene(0, 0.4, 0.01, 0.07, 12));
+  DensifyOptions fit, fallback;
+  fit.radii = fallback.radii = VoidRadii::Fit;
+  fallback.fallback_r_min = true;
+  const Filled a = front_then_fill(scene, fit), b = front_then_fill(scene, fallback);
+  const auto sd = box_distance<3>(Vec3(0, 0, 0), Vec3(0.4, 0.4, 0.4));
+  expect_valid<3>(b.packing, sd, 0.01, 0.07, "fallback");
+  EXPECT_GT(b.report.solid_after, a.report.solid_after);
+  const auto at_r_min = std::count(b.packing.radii.begin() + static_cast<std::ptrdiff_t>(b.before), b.packing.radii.end(), 0.01);
+  EXPECT_GT(static_cast<std::size_t>(at_r_min), b.report.added / 4) << "many voids took a sphere of r_min";
+  const std::vector<int> z = contacts_of_new<3>(b.packing, b.before, sd, 1e-9);
+  EXPECT_GE(*std::min_element(z.begin(), z.end()), 3);
+}
+
 TEST(VoidFilling, AllowedOverlapStaysWithinEpsilonRMin) {
   const fp::Scene scene = scene_from_yaml(box_scene(0, 0.4, 0.01, 0.07, 3));
   DensifyOptions exact, loose;
