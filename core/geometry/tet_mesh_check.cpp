@@ -20,7 +20,7 @@ std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
 
 }  // namespace
 
-std::string tet_mesh_problem(const TetMesh& mesh) {
+std::string tet_mesh_problem(const TetMesh& mesh, bool boundary_closes) {
   if (mesh.tets.empty()) return "the mesh has no tetrahedra (element type 4)";
   // Orientation and flatness.
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
@@ -58,7 +58,7 @@ std::string tet_mesh_problem(const TetMesh& mesh) {
     }
   std::unordered_map<std::uint64_t, int> boundary_edges;
   for (const auto& [f, use] : faces)
-    if (use.count == 1)
+    if (use.count == 1 && boundary_closes)
       for (int i = 0; i < 3; ++i) ++boundary_edges[edge_key(f[static_cast<std::size_t>(i)], f[static_cast<std::size_t>((i + 1) % 3)])];
   std::uint64_t worst = 0;
   bool bad = false;

@@ -14,6 +14,9 @@ namespace fp {
 
 /// "" when `mesh` is fit to pack, else what is wrong with it, naming the element (1-based, in
 /// the file's order of tetrahedra) or the nodes (the file's order, 1-based).
-std::string tet_mesh_problem(const TetMesh& mesh);
+/// `boundary_closes` = false skips the boundary's edges: for a mesh whose conformity its mesher
+/// guarantees and whose boundary may touch itself along an edge (a pinch in a thin part), which a
+/// hanging node cannot be told from by counting.
+std::string tet_mesh_problem(const TetMesh& mesh, bool boundary_closes = true);
 
 }  // namespace fp

@@ -69,6 +69,9 @@ struct TetMeshOptions {
   int z_min = 3;         ///< contacts a sphere of the geometric procedure needs (walls count)
   bool loose = false;    ///< skip steps 5 and 6 (a loose packing)
   bool fallback_r_min = false;  ///< step 7b: DensifyOptions::fallback_r_min
+  /// A surface container (STL/OFF/OBJ) is meshed into tetrahedra of about this edge; unset: the
+  /// paper's 8 mean radii.
+  std::optional<double> mesh_edge;
 };
 
 struct PackerOptions {

@@ -25,7 +25,11 @@
 #include "core/geometry/local_frame.hpp"
 #include "core/geometry/mesh_container.hpp"
 #include "core/geometry/polygon_container.hpp"
+#include "core/geometry/tet_mesh_check.hpp"
 #include "core/geometry/tet_mesh_container.hpp"
+#ifdef FRONTPACK_TET_MESHER
+#include "core/geometry/tet_mesher_cgal.hpp"
+#endif
 #include "core/io/input_file.hpp"
 #include "core/io/output_format.hpp"
 #include "core/sampling/constant_radius.hpp"
@@ -587,7 +591,7 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
   const Map m = v.map();
   m.check_known({"method", "front", "candidate", "pair_order", "contact_bodies", "probe_smallest", "walls", "radius_pool", "contact_tolerance",
                  "grid_cell_factor", "hierarchical_grid_ratio", "seed_point", "minimisation", "contact_solver", "threads", "block_edge",
-                 "overlap", "z_min", "loose", "fallback_r_min"});
+                 "overlap", "z_min", "loose", "fallback_r_min", "mesh_edge"});
   if (auto x = m.find("contact_solver")) {
     if (!shapes)
       x->fail("used by particle templates only; this scene has spheres ('particles: {radius: ...}'), whose contacts are "
@@ -606,7 +610,7 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
     if (p.method == "tet_mesh" && (D != 3 || shapes))
       x->fail("the tetrahedral-mesh packer (paper 000) packs spheres in 3D: it needs dimension: 3 and 'particles: {radius: ...}'");
   }
-  for (const char* key : {"overlap", "z_min", "loose", "fallback_r_min"})
+  for (const char* key : {"overlap", "z_min", "loose", "fallback_r_min", "mesh_edge"})
     if (auto x = m.find(key); x && p.method != "tet_mesh")
       x->fail("a parameter of the tetrahedral-mesh packer: needs 'method: tet_mesh'");
   if (auto x = m.find("overlap")) {
@@ -621,6 +625,7 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
   }
   if (auto x = m.find("loose")) p.tet_mesh.loose = x->boolean();
   if (auto x = m.find("fallback_r_min")) p.tet_mesh.fallback_r_min = x->boolean();
+  if (auto x = m.find("mesh_edge")) p.tet_mesh.mesh_edge = x->positive();
   if (auto x = m.find("front")) {
     const std::string s = x->choice({"closest", "random", "fifo"});
     p.front_pick = s == "closest" ? FrontPick::ClosestToSeed : s == "random" ? FrontPick::Random : FrontPick::Fifo;
@@ -991,6 +996,37 @@ bool parse_particles(const Value& v, const Container<D>& container, Scene& scene
   return false;
 }
 
+/// Packer method tet_mesh in a container that is a surface (STL/OFF/OBJ): its inside meshed into
+/// tetrahedra of the packer's mesh_edge, by default the paper's 8 mean radii.
+void mesh_surface(Scene& scene, const Container<3>& container, const Map& root) {
+  const Value method = *root.find("packer")->map().find("method");
+  const auto* surface = dynamic_cast<const MeshContainer*>(&container);
+  if (!surface)
+    method.fail("the tetrahedral-mesh packer needs a tetrahedral mesh (container: {type: mesh, file: NAME.msh}, Gmsh 2.2 or "
+                "4.1) or a surface to mesh (container: {type: mesh, file: NAME.stl, .off or .obj})");
+  const double edge = scene.packer.tet_mesh.mesh_edge.value_or(8.0 * scene.radii->mean());
+#ifdef FRONTPACK_TET_MESHER
+  // Tetrahedra of edge h: about 8.5 per h^3 of volume; past the tetrahedra a mesh of the scene's
+  // own limits could hold, refuse before meshing.
+  const double tets = 8.5 * container.measure() / (edge * edge * edge);
+  if (tets > 5e7) {
+    std::ostringstream os;
+    os << "meshing the container with edges of " << edge << " would make about " << tets
+       << " tetrahedra (more than 5e7); give packer.mesh_edge or larger particles";
+    method.fail(os.str());
+  }
+  scene.tet_mesh = construct(root.find("packer")->map(), [&] {
+    return std::make_shared<const TetMesh>(mesh_tetrahedra(surface->vertices(), surface->triangles(), edge));
+  }, "meshing the container into tetrahedra");
+  if (const std::string problem = tet_mesh_problem(*scene.tet_mesh, /*boundary_closes=*/false); !problem.empty())
+    method.fail("the tetrahedra meshed from the container are unfit: " + problem);
+#else
+  (void)edge;
+  method.fail("this frontpack was built without the tetrahedral mesher (configure with -DFRONTPACK_TET_MESHER=ON), so "
+              "the tetrahedral-mesh packer needs a .msh container (Gmsh 2.2 or 4.1)");
+#endif
+}
+
 template <int D>
 void parse_body(const Map& root, Scene& scene, const Context& ctx) {
   const Value container_value = root.get("container", "the region to fill");
@@ -1000,9 +1036,9 @@ void parse_body(const Map& root, Scene& scene, const Context& ctx) {
   scene.spots["particles"] = particles_value.spot();
   const bool shapes = parse_particles<D>(particles_value, *container, scene);
   if (auto p = root.find("packer")) parse_packer<D>(*p, *container, shapes, scene.packer, scene.spots);
-  if (scene.packer.method == "tet_mesh" && !scene.tet_mesh)
-    root.find("packer")->map().find("method")->fail(
-        "the tetrahedral-mesh packer needs a tetrahedral mesh: container: {type: mesh, file: NAME.msh} (Gmsh, versions 2.2 or 4.1)");
+  if constexpr (D == 3) {
+    if (scene.packer.method == "tet_mesh" && !scene.tet_mesh) mesh_surface(scene, *container, root);
+  }
   // A container more than kFarFrameExtent smallest particles across can never be filled (some
   // 10^16 particles): it is packed only around where growth starts, and there its own frame (its
   // centre) would leave coordinates of up to half its extent, too coarse for the contact

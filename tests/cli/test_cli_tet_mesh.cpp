@@ -71,6 +71,32 @@ TEST(CliTetMesh, TheFrontPacksATetrahedralMeshsBoundaryToo) {
   EXPECT_EQ(run_frontpack(dir, "validate f.csv --scene s.yaml").exit_code, 0);
 }
 
+TEST(CliTetMesh, ASurfaceContainerIsMeshedFirst) {
+  // An STL cube: meshed into tetrahedra of 8 mean radii (or packer.mesh_edge), then packed.
+  TempDir dir;
+  const std::string cube = source_path("tests/data/meshes/cube.stl");
+  write_bytes(dir.work() / "s.yaml", "dimension: 3\nseed: 1\ncontainer: {type: mesh, file: " + cube +
+                                         "}\nparticles: {radius: {distribution: uniform, min: 0.02, max: 0.06}}\n"
+                                         "packer: {method: tet_mesh}\n");
+  const RunResult r = run_frontpack(dir, "pack s.yaml -o out.csv");
+  if (r.err.find("built without the tetrahedral mesher") != std::string::npos) GTEST_SKIP() << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(run_frontpack(dir, "validate out.csv --scene s.yaml --ks-alpha 0").exit_code, 0);
+  const auto tets = [](const std::string& out) {
+    const auto at = out.find("tet mesh       ");
+    return at == std::string::npos ? 0 : std::stoi(out.substr(at + 15));
+  };
+  EXPECT_GT(tets(r.out), 50);
+  write_bytes(dir.work() / "fine.yaml", "dimension: 3\nseed: 1\ncontainer: {type: mesh, file: " + cube +
+                                            "}\nparticles: {radius: {distribution: uniform, min: 0.02, max: 0.06}}\n"
+                                            "packer: {method: tet_mesh, mesh_edge: 0.16}\n");
+  const RunResult fine = run_frontpack(dir, "pack fine.yaml -o fine.csv");
+  ASSERT_EQ(fine.exit_code, 0) << fine.err;
+  EXPECT_GT(tets(fine.out), 4 * tets(r.out)) << "half the edge: about 8 times the tetrahedra";
+  ASSERT_EQ(run_frontpack(dir, "pack s.yaml -o again.csv -q").exit_code, 0);
+  EXPECT_EQ(read_bytes(dir.work() / "again.csv"), read_bytes(dir.work() / "out.csv")) << "the same mesh, the same spheres";
+}
+
 TEST(CliTetMesh, RegionsKeepTheirOwnRadiiAndSolidFraction) {
   // The two physical volumes Gmsh wrote (lower z < 0.5, upper z > 0.5): the upper one with smaller
   // spheres and a lower solid fraction.
