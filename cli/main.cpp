@@ -117,7 +117,7 @@ int run(int argc, char** argv) {
                            "overlap allowed, relative to the smaller radius of each pair (default: the scene's contact_tolerance)")
       ->check(CLI::NonNegativeNumber);
   validate_cmd->add_option("--ks-alpha", check.ks_alpha, "level of the radii test (K-S; chi-square for a discrete law, exact match for a constant one): "
-                           "the radii fail when its p-value is below this (default 0.001, as pack)")
+                           "the radii fail when its p-value is below this (default as pack: 0.001, or 0 (the range only) for the voids' own radii of method tet_mesh or densify radii: fit)")
       ->check(CLI::Range(0.0, 1.0));
   validate_cmd->add_option("-j,--threads", check.threads,
                            "threads (default 0: every hardware thread); the report is the same for every count")

@@ -8,6 +8,18 @@
 
 namespace fp {
 
+double overlap_tolerance(const Scene& scene) {
+  double epsilon = scene.densify ? scene.densify->overlap : 0.0;
+  if (scene.packer.method == "tet_mesh") epsilon = std::max(epsilon, scene.packer.tet_mesh.overlap);
+  return scene.packer.contact_tolerance + epsilon;
+}
+
+double radii_alpha_of(const Scene& scene) {
+  const bool fitted = scene.packer.method == "tet_mesh" || !scene.regions.empty() ||
+                      (scene.densify && scene.densify->radii == VoidRadii::Fit);
+  return fitted ? 0.0 : kRadiiAlpha;
+}
+
 RadiusDistributionPtr radii_to_check(const Scene& scene) {
   RadiusDistributionPtr law = scene.radii;
   if (!law || scene.regions.empty()) return law;

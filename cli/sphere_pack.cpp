@@ -31,7 +31,7 @@ void fill(const Scene& scene, const DensifyOptions& options, SphereRun<D>& run, 
           const VoidRegion<D>* region = nullptr, std::uint64_t stream = 0) {
   const double before = solid_of(run.packing);
   VoidFillingReport r = fill_voids<D>(run.packing, *scene.container<D>(), law, options, scene.seed + stream,
-                                      run.contact_tolerance, region);
+                                      scene.packer.contact_tolerance, region);
   run.seconds += r.seconds;
   r.solid_before = before;  // of the whole packing, whatever the region
   r.solid_after = run.solid_measure = solid_of(run.packing);
@@ -41,7 +41,9 @@ void fill(const Scene& scene, const DensifyOptions& options, SphereRun<D>& run, 
   } else {
     run.densified = r;
   }
-  run.contact_tolerance = std::max(run.contact_tolerance, options.overlap);
+  // Overlaps of epsilon r_min are allowed, to rounding (one placed at exactly epsilon r_min between
+  // two spheres of r_min came out 0.050000000000000926 of it): overlap_tolerance().
+  run.contact_tolerance = overlap_tolerance(scene);
 }
 
 /// Paper 000: steps 2-7a on the scene's tetrahedral mesh, then step 7b, the void filling with the
@@ -143,8 +145,8 @@ PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth
   options.contact_tolerance = res.contact_tolerance;
   options.threads = thread_count(scene.packer.threads);
   // Radii the voids gave (paper 000) are asked to lie in the range only; their law is reported.
-  const bool fitted = res.tet_filled || !scene.regions.empty() || (res.densified && scene.densify && scene.densify->radii == VoidRadii::Fit);
-  options.radii_alpha = fitted ? 0.0 : kRadiiAlpha;
+  const bool fitted = radii_alpha_of(scene) == 0.0;
+  options.radii_alpha = radii_alpha_of(scene);
   const RadiusDistributionPtr law = radii_to_check(scene);
   PackCheck c = depth == CheckDepth::Analysis
                     ? pack_check_of(analyze_packing<D>(res.packing, &container, law.get(), options))

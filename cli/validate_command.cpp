@@ -67,8 +67,8 @@ int report(const Scene& scene, const ValidationReport& r, const ValidateCommandO
 
 template <int D>
 int validate(const Scene& scene, const Packing<D>& P, const ValidateCommandOptions& o) {
-  const double tol = o.tolerance >= 0 ? o.tolerance : scene.packer.contact_tolerance;
-  return report<D>(scene, validate_packing<D>(P, *scene.container<D>(), radii_to_check(scene).get(), tol, o.ks_alpha, nullptr,
+  const double tol = o.tolerance >= 0 ? o.tolerance : overlap_tolerance(scene);
+  return report<D>(scene, validate_packing<D>(P, *scene.container<D>(), radii_to_check(scene).get(), tol, o.ks_alpha >= 0 ? o.ks_alpha : radii_alpha_of(scene), nullptr,
                                                  thread_count(o.threads)),
                    o);
 }
@@ -76,7 +76,7 @@ int validate(const Scene& scene, const Packing<D>& P, const ValidateCommandOptio
 template <int D>
 int validate(const Scene& scene, const ShapePacking<D>& P, const ValidateCommandOptions& o) {
   const double tol = o.tolerance >= 0 ? o.tolerance : scene.packer.minimisation.gap_tolerance;
-  return report<D>(scene, validate_shapes<D>(P, *scene.container<D>(), tol, requested_templates(scene), o.ks_alpha), o);
+  return report<D>(scene, validate_shapes<D>(P, *scene.container<D>(), tol, requested_templates(scene), o.ks_alpha >= 0 ? o.ks_alpha : kRadiiAlpha), o);
 }
 
 }  // namespace

@@ -12,7 +12,9 @@ struct ValidateCommandOptions {
   std::string scene_path;
   std::string format;          ///< --format of PACKING; default from its extension
   double tolerance = -1;       ///< overlap allowance relative to min(ri, rj); < 0: the scene's contact_tolerance
-  double ks_alpha = kRadiiAlpha;  ///< the radii fail when their test's p-value (radii_fit.hpp) is below this
+  /// The radii fail when their test's p-value (radii_fit.hpp) is below this; negative: as `pack`
+  /// checks the scene (radii_alpha_of in cli/pack_check.hpp: 0.001, or 0 for the voids' own radii).
+  double ks_alpha = -1.0;
   int threads = 0;             ///< -j: 0 = every hardware thread (the report does not depend on it)
   bool quiet = false;
 };

@@ -64,6 +64,20 @@ TEST(CliTetMesh, StopsAtTheTargetSolidFractionAndCount) {
   EXPECT_EQ(lines_of(read_bytes(dir.work() / "n.csv")).size(), 3001u) << "a header and 3,000 spheres";
 }
 
+TEST(CliTetMesh, AnAllowedOverlapPassesPackAndValidateAlike) {
+  // Overlaps placed at exactly epsilon r_min (the last resort's reduction, the r_min fallback)
+  // must pass the check: pack's and validate's, with their defaults (the radii: their range).
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", scene_for(source_path("tests/data/meshes/msh/cube_kuhn4.msh"),
+                                               "packer: {method: tet_mesh, overlap: 0.05, fallback_r_min: true}\n"));
+  const RunResult r = run_frontpack(dir, "pack s.yaml -o out.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("tolerance 0.05"), std::string::npos) << r.out;
+  const RunResult v = run_frontpack(dir, "validate out.csv --scene s.yaml");
+  EXPECT_EQ(v.exit_code, 0) << v.out;
+  EXPECT_NE(v.out.find("max overlap 0.05 of the smaller radius"), std::string::npos) << "the allowance is used: " << v.out;
+}
+
 TEST(CliTetMesh, TheFrontPacksATetrahedralMeshsBoundaryToo) {
   TempDir dir;
   write_bytes(dir.work() / "s.yaml", scene_for(source_path("tests/data/meshes/msh/cube_kuhn4.msh"), ""));
