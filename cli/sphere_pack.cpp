@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
+#include <optional>
 #include <string>
+#include <vector>
 
-#include "core/geometry/tet_locator.hpp"
+#include "cli/scene_regions.hpp"
 #include "core/metrics/packing_analysis.hpp"
 #include "core/metrics/validate.hpp"
 #include "core/system/parallel_parts.hpp"
@@ -19,7 +20,7 @@ namespace {
 template <int D>
 double solid_of(const Packing<D>& p) {
   double s = 0;
-  for (const double r : p.radii) s += D == 3 ? 4.0 / 3.0 * std::numbers::pi * r * r * r : std::numbers::pi * r * r;
+  for (const double r : p.radii) s += ball_measure<D>(r);
   return s;
 }
 
@@ -59,13 +60,11 @@ void fill_tet_mesh(const Scene& scene, SphereRun<3>& run) {
   o.loose = t.loose;
   o.target_volume_fraction = scene.stop.target_volume_fraction;
   o.max_particles = scene.stop.max_particles;
+  std::optional<SceneRegions> regions;
   if (!scene.regions.empty()) {
-    o.regions.push_back({});
-    for (const RegionSpec& r : scene.regions) o.regions.push_back({r.radii.get(), r.target_volume_fraction});
-    o.tet_region.assign(mesh.tets.size(), 0);
-    for (std::size_t k = 0; k < mesh.tets.size(); ++k)
-      for (std::size_t g = 0; g < scene.regions.size(); ++g)
-        if (mesh.tet_group[k] == scene.regions[g].tag) o.tet_region[k] = static_cast<int>(g + 1);
+    regions.emplace(scene);
+    for (std::size_t g = 0; g < regions->count(); ++g) o.regions.push_back({regions->law(g), regions->target(g)});
+    o.tet_region = regions->of_tet();
   }
   run.contact_tolerance = scene.packer.contact_tolerance;
   run.tet_filled = fp::fill_tet_mesh(mesh, *scene.container3, *scene.radii, o, scene.seed, run.contact_tolerance, run.packing);
@@ -78,26 +77,41 @@ void fill_tet_mesh(const Scene& scene, SphereRun<3>& run) {
   step_7b.target_volume_fraction = o.target_volume_fraction;
   step_7b.max_particles = o.max_particles;
   const DensifyOptions base = scene.densify.value_or(step_7b);
-  if (scene.regions.empty()) {
+  if (!regions) {
     fill<3>(scene, base, run, *scene.radii);
   } else {
-    const TetLocator locator(mesh);
-    std::vector<double> volume(o.regions.size(), 0.0);
-    for (std::size_t k = 0; k < mesh.tets.size(); ++k) volume[static_cast<std::size_t>(o.tet_region[k])] += tet_volume(mesh, k);
-    for (std::size_t g = 0; g < o.regions.size(); ++g) {
-      if (!(volume[g] > 0)) continue;
-      VoidRegion<3> where{[&, g](const Vec3& x) {
-                            const int k = locator.tet_at(x);
-                            return k >= 0 && static_cast<std::size_t>(o.tet_region[static_cast<std::size_t>(k)]) == g;
-                          },
-                          volume[g]};
+    for (std::size_t g = 0; g < regions->count(); ++g) {
+      if (!(regions->volume(g) > 0)) continue;
+      const VoidRegion<3> where{[&, g](const Vec3& x) { return regions->at(x) == g; }, regions->volume(g)};
       DensifyOptions d = base;
-      if (o.regions[g].target_volume_fraction) d.target_volume_fraction = o.regions[g].target_volume_fraction;
-      fill<3>(scene, d, run, o.regions[g].radii ? *o.regions[g].radii : *scene.radii, &where, g);
+      if (const auto phi0 = regions->target(g)) d.target_volume_fraction = phi0;
+      fill<3>(scene, d, run, regions->law(g) ? *regions->law(g) : *scene.radii, &where, g);
     }
   }
   if (run.densified->stop == VoidFillingStop::VolumeFraction) run.stop = StopReason::VolumeFraction;
   else if (run.densified->stop == VoidFillingStop::ParticleCount) run.stop = StopReason::ParticleCount;
+}
+
+/// Each region's solid fraction (its spheres by their centres) against its phi0.
+void add_region_lines(const SceneRegions& regions, const Packing<3>& packing, PackCheck& c) {
+  std::vector<double> solid(regions.count(), 0.0);
+  std::vector<std::uint64_t> count(regions.count(), 0);
+  for (std::size_t i = 0; i < packing.size(); ++i) {
+    const std::size_t g = regions.at(packing.centers[i]);
+    solid[g] += ball_measure<3>(packing.radii[i]);
+    ++count[g];
+  }
+  for (std::size_t g = 0; g < regions.count(); ++g) {
+    if (!(regions.volume(g) > 0)) continue;
+    const auto target = regions.target(g);
+    char line[240];
+    std::snprintf(line, sizeof line, "  region         %s: volume fraction %.4f%s, %llu spheres (by their centres)\n",
+                  regions.name(g).c_str(), solid[g] / regions.volume(g),
+                  target ? (" (target " + std::to_string(*target).substr(0, 6) + ")").c_str() : "",
+                  static_cast<unsigned long long>(count[g]));
+    c.summary_lines += line;
+    c.metrics.emplace_back("region_" + regions.name(g) + "_volume_fraction", solid[g] / regions.volume(g));
+  }
 }
 
 }  // namespace
@@ -165,39 +179,7 @@ PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth
     c.info.emplace_back("target_volume_fraction", "not reached");
   }
   if constexpr (D == 3) {
-    if (!scene.regions.empty() && scene.tet_mesh) {  // each region's solid fraction (spheres by their centres)
-      const TetMesh& mesh = *scene.tet_mesh;
-      const TetLocator locator(mesh);
-      std::vector<double> volume(scene.regions.size() + 1, 0.0), solid(volume.size(), 0.0);
-      std::vector<std::uint64_t> count(volume.size(), 0);
-      const auto region_of_tet = [&](int k) {
-        if (k < 0) return std::size_t{0};
-        for (std::size_t g = 0; g < scene.regions.size(); ++g)
-          if (mesh.tet_group[static_cast<std::size_t>(k)] == scene.regions[g].tag) return g + 1;
-        return std::size_t{0};
-      };
-      for (std::size_t k = 0; k < mesh.tets.size(); ++k) volume[region_of_tet(static_cast<int>(k))] += tet_volume(mesh, k);
-      for (std::size_t i = 0; i < res.packing.size(); ++i) {
-        const std::size_t g = region_of_tet(locator.tet_at(res.packing.centers[i]));
-        const double r = res.packing.radii[i];
-        solid[g] += 4.0 / 3.0 * std::numbers::pi * r * r * r;
-        ++count[g];
-      }
-      for (std::size_t g = 0; g < volume.size(); ++g) {
-        if (!(volume[g] > 0)) continue;
-        const std::string name = g == 0 ? "(no region)" : scene.regions[g - 1].name;
-        const std::optional<double> target = g == 0 ? scene.stop.target_volume_fraction
-                                                    : scene.regions[g - 1].target_volume_fraction
-                                                          ? scene.regions[g - 1].target_volume_fraction
-                                                          : scene.stop.target_volume_fraction;
-        char line[240];
-        std::snprintf(line, sizeof line, "  region         %s: volume fraction %.4f%s, %llu spheres (by their centres)\n", name.c_str(),
-                      solid[g] / volume[g], target ? (" (target " + std::to_string(*target).substr(0, 6) + ")").c_str() : "",
-                      static_cast<unsigned long long>(count[g]));
-        c.summary_lines += line;
-        c.metrics.emplace_back("region_" + name + "_volume_fraction", solid[g] / volume[g]);
-      }
-    }
+    if (!scene.regions.empty()) add_region_lines(SceneRegions(scene), res.packing, c);
   }
   if (const auto& t = res.tet_filled) {
     char line[400];

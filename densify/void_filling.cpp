@@ -4,7 +4,6 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <numbers>
 #include <span>
 #include <utility>
 #include <vector>
@@ -57,11 +56,6 @@ constexpr double kMirrorJitter = 1e-6;
 /// A void's room is compared with r_min within this relative slack (rounding of the fit).
 constexpr double kRoomSlack = 1e-9;
 
-template <int D>
-double ball_measure(double r) {
-  if constexpr (D == 3) return 4.0 / 3.0 * std::numbers::pi * r * r * r;
-  else return std::numbers::pi * r * r;
-}
 
 template <int D>
 class VoidFiller {

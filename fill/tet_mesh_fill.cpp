@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -127,7 +126,6 @@ class TetFiller {
 
  private:
   static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-  static double ball_volume(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
 
   static std::vector<Region> regions_of(const TetMesh& mesh, const RadiusDistribution& dist, const TetFillOptions& o) {
     (void)mesh;
@@ -169,7 +167,7 @@ class TetFiller {
     Region& g = regions_[region];
     double radius = rule(r, g);
     if (!place_.try_place(c, radius, true, g.r_min)) return false;
-    g.solid += ball_volume(radius);
+    g.solid += ball_measure<3>(radius);
     return true;
   }
 
@@ -225,7 +223,7 @@ class TetFiller {
               const Vec3& x = s.at[static_cast<std::size_t>(q)].centre;
               if (locator_ && region_at(x) != region) continue;  // a sphere of the region is centred in it
               if (place_.try_place(x, r, true, g.r_min)) {
-                g.solid += ball_volume(r);
+                g.solid += ball_measure<3>(r);
                 return true;
               }
             }
