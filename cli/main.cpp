@@ -49,6 +49,17 @@ int run_pack(fp::PackCommandOptions& pack, int argc, char** argv) {
 #endif
 }
 
+/// The options `pack` and `densify` share: where and how the packing is written, the seed, the
+/// record, quiet.
+void add_output_options(CLI::App* cmd, fp::PackCommandOptions& o, std::string& seed_text, const CLI::Validator& decimal_seed) {
+  cmd->add_option("-o,--output", o.output_path,
+                  "write the packing to PATH (replaces the scene's output list; format from --format or the extension)");
+  cmd->add_option("--format", o.format, "format of -o: vtu | yade | lammps | csv | json");
+  cmd->add_option("--seed", seed_text, "override the scene's 64-bit seed (decimal)")->check(decimal_seed);
+  cmd->add_option("--record", o.record_path, "also write the JSON run record (without particles) to PATH");
+  cmd->add_flag("-q,--quiet", o.quiet, "no summary on stdout");
+}
+
 int run(int argc, char** argv) {
   CLI::App app{"frontpack: dense packings of spheres and disks by the advancing front"};
   app.set_version_flag("--version", std::string("frontpack ") + fp::kVersion);
@@ -57,8 +68,6 @@ int run(int argc, char** argv) {
   fp::PackCommandOptions pack;
   CLI::App* pack_cmd = app.add_subcommand("pack", "pack the container of SCENE and write the outputs");
   pack_cmd->add_option("scene", pack.scene_path, "scene file (YAML)")->required();
-  pack_cmd->add_option("-o,--output", pack.output_path,
-                       "write the packing to PATH (replaces the scene's output list; format from --format or the extension)");
   // Read as text and converted here: CLI11 would wrap "-1" round to 2^64-1, clamp a number past
   // 2^64-1 and read "042" as octal 34, where the scene's `seed: 042` is 42. Decimal digits only.
   std::string seed_text;
@@ -73,15 +82,12 @@ int run(int argc, char** argv) {
         return std::string();
       },
       "UINT64");
-  pack_cmd->add_option("--seed", seed_text, "override the scene's 64-bit seed (decimal)")->check(decimal_seed);
-  pack_cmd->add_option("--format", pack.format, "format of -o: vtu | yade | lammps | csv | json");
+  add_output_options(pack_cmd, pack, seed_text, decimal_seed);
   pack_cmd->add_option("-j,--threads", pack.threads,
                        "threads (0: every hardware thread; replaces the scene's packer.threads). Above 1 the "
                        "container grows in blocks, with the same output for every thread count; the validation and analysis "
                        "use them too")
       ->check(CLI::Range(0, 4096));
-  pack_cmd->add_option("--record", pack.record_path, "also write the JSON run record (without particles) to PATH");
-  pack_cmd->add_flag("-q,--quiet", pack.quiet, "no summary on stdout");
   pack_cmd->add_flag("--progress", pack.force_progress, "progress line on stderr even when it is not a terminal");
 
   // CLI11 would answer "A subcommand is required" to a mistyped command.
@@ -98,14 +104,9 @@ int run(int argc, char** argv) {
   densify_cmd->add_option("packing", densify.input_path, "packing file (vtu, yade, lammps, csv or json)")->required();
   densify_cmd->add_option("--scene", densify.scene_path, "the scene it fills: container, radii, `densify:` options")->required();
   densify_cmd->add_option("--input-format", densify.input_format, "format of PACKING (default: from its extension)");
-  densify_cmd->add_option("-o,--output", densify.output_path,
-                          "write the packing to PATH (replaces the scene's output list; format from --format or the extension)");
-  densify_cmd->add_option("--format", densify.format, "format of -o: vtu | yade | lammps | csv | json");
-  densify_cmd->add_option("--seed", seed_text, "override the scene's 64-bit seed (decimal)")->check(decimal_seed);
+  add_output_options(densify_cmd, densify, seed_text, decimal_seed);
   densify_cmd->add_option("-j,--threads", densify.threads, "threads of the validation and analysis (0: every hardware thread)")
       ->check(CLI::Range(0, 4096));
-  densify_cmd->add_option("--record", densify.record_path, "also write the JSON run record (without particles) to PATH");
-  densify_cmd->add_flag("-q,--quiet", densify.quiet, "no summary on stdout");
 
   fp::ValidateCommandOptions check;
   CLI::App* validate_cmd = app.add_subcommand(

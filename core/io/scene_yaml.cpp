@@ -565,6 +565,29 @@ RadiusDistributionPtr parse_distribution(const Value& v, int dimension) {
 
 const Keys kMinimisationAlgorithms = {"newton", "slsqp", "lbfgs", "nelder-mead", "cobyla", "sbplx"};
 
+/// A solid fraction (phi0): in (0, 1).
+double solid_fraction(const Value& x) {
+  const double phi = x.number();
+  if (!(phi > 0 && phi < 1)) x.fail("must be in (0, 1) (got " + x.node().Scalar() + ")");
+  return phi;
+}
+
+/// An overlap allowance epsilon, times r_min: in [0, 1).
+double overlap_epsilon(const Value& x) {
+  const double e = x.number();
+  if (!(e >= 0 && e < 1)) x.fail("must be in [0, 1): the overlap allowed, times r_min (got " + x.node().Scalar() + ")");
+  return e;
+}
+
+/// The contacts a placed sphere needs (z_min): from 1 to `most` (the dimension + 1).
+int contact_count(const Value& x, int most) {
+  const std::uint64_t z = x.unsigned_integer();
+  if (z < 1 || z > static_cast<std::uint64_t>(most))
+    x.fail("must be an integer from 1 to " + std::to_string(most) + " in " + std::to_string(most - 1) + "D (got " +
+           x.node().Scalar() + ")");
+  return static_cast<int>(z);
+}
+
 void parse_minimisation(const Value& v, MinimisationOptions& o) {
   const Map m = v.map();
   m.check_known({"algorithm", "gap_tolerance", "max_evaluations", "polish"});
@@ -613,16 +636,8 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
   for (const char* key : {"overlap", "z_min", "loose", "fallback_r_min", "mesh_edge"})
     if (auto x = m.find(key); x && p.method != "tet_mesh")
       x->fail("a parameter of the tetrahedral-mesh packer: needs 'method: tet_mesh'");
-  if (auto x = m.find("overlap")) {
-    const double e = x->number();
-    if (!(e >= 0 && e < 1)) x->fail("must be in [0, 1): the overlap allowed, times r_min (got " + x->node().Scalar() + ")");
-    p.tet_mesh.overlap = e;
-  }
-  if (auto x = m.find("z_min")) {
-    const std::uint64_t z = x->unsigned_integer();
-    if (z < 1 || z > 4) x->fail("must be an integer from 1 to 4 (got " + x->node().Scalar() + ")");
-    p.tet_mesh.z_min = static_cast<int>(z);
-  }
+  if (auto x = m.find("overlap")) p.tet_mesh.overlap = overlap_epsilon(*x);
+  if (auto x = m.find("z_min")) p.tet_mesh.z_min = contact_count(*x, 4);
   if (auto x = m.find("loose")) p.tet_mesh.loose = x->boolean();
   if (auto x = m.find("fallback_r_min")) p.tet_mesh.fallback_r_min = x->boolean();
   if (auto x = m.find("mesh_edge")) p.tet_mesh.mesh_edge = x->positive();
@@ -701,9 +716,7 @@ void parse_stop(const Value& v, StopCriteria& s, std::map<std::string, SourceSpo
     spots["stop.particles"] = x->spot();
   }
   if (auto x = m.find("volume_fraction")) {
-    const double phi = x->number();
-    if (!(phi > 0 && phi < 1)) x->fail("must be in (0, 1) (got " + x->node().Scalar() + ")");
-    s.target_volume_fraction = phi;
+    s.target_volume_fraction = solid_fraction(*x);
     spots["stop.volume_fraction"] = x->spot();
   }
   if (auto x = m.find("time")) s.time_limit_seconds = x->positive();
@@ -722,28 +735,14 @@ void parse_densify(const Value& v, int dimension, bool shapes, DensifyOptions& d
     if (n > 1000000) x->fail("must be an integer from 0 (half the square root of the packing's count) to 1000000 (got " + x->node().Scalar() + ")");
     d.radius_pool = static_cast<int>(n);
   }
-  if (auto x = m.find("overlap")) {
-    const double e = x->number();
-    if (!(e >= 0 && e < 1)) x->fail("must be in [0, 1): the overlap allowed, times r_min (got " + x->node().Scalar() + ")");
-    d.overlap = e;
-  }
-  if (auto x = m.find("z_min")) {
-    const std::uint64_t z = x->unsigned_integer();
-    if (z < 1 || z > static_cast<std::uint64_t>(dimension + 1))
-      x->fail("must be an integer from 1 to " + std::to_string(dimension + 1) + " in " + std::to_string(dimension) +
-              "D (got " + x->node().Scalar() + ")");
-    d.z_min = static_cast<int>(z);
-  }
+  if (auto x = m.find("overlap")) d.overlap = overlap_epsilon(*x);
+  if (auto x = m.find("z_min")) d.z_min = contact_count(*x, dimension + 1);
   if (auto x = m.find("rounds")) {
     const std::uint64_t n = x->unsigned_integer();
     if (n > 1000000) x->fail("must be an integer from 0 (until a round adds nothing) to 1000000 (got " + x->node().Scalar() + ")");
     d.rounds = static_cast<int>(n);
   }
-  if (auto x = m.find("volume_fraction")) {
-    const double phi = x->number();
-    if (!(phi > 0 && phi < 1)) x->fail("must be in (0, 1) (got " + x->node().Scalar() + ")");
-    d.target_volume_fraction = phi;
-  }
+  if (auto x = m.find("volume_fraction")) d.target_volume_fraction = solid_fraction(*x);
   if (auto x = m.find("particles")) {
     const std::uint64_t n = x->unsigned_integer(true);
     if (n == 0) x->fail("must be a positive integer (got " + x->node().Scalar() + ")");
@@ -780,11 +779,7 @@ void parse_regions(const Value& v, Scene& scene) {
     const Map e = entry.map();
     e.check_known({"radius", "volume_fraction"});
     if (auto x = e.find("radius")) r.radii = parse_distribution(*x, 3);
-    if (auto x = e.find("volume_fraction")) {
-      const double phi = x->number();
-      if (!(phi > 0 && phi < 1)) x->fail("must be in (0, 1) (got " + x->node().Scalar() + ")");
-      r.target_volume_fraction = phi;
-    }
+    if (auto x = e.find("volume_fraction")) r.target_volume_fraction = solid_fraction(*x);
     scene.regions.push_back(std::move(r));
   }
 }
