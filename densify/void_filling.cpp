@@ -56,7 +56,6 @@ constexpr double kMirrorJitter = 1e-6;
 /// A void's room is compared with r_min within this relative slack (rounding of the fit).
 constexpr double kRoomSlack = 1e-9;
 
-
 template <int D>
 class VoidFiller {
  public:
