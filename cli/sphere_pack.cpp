@@ -10,6 +10,7 @@
 #include "cli/scene_regions.hpp"
 #include "core/metrics/packing_analysis.hpp"
 #include "core/metrics/validate.hpp"
+#include "core/sampling/split_radius.hpp"
 #include "core/system/parallel_parts.hpp"
 #include "front/block_exchange.hpp"
 #include "front/pack.hpp"
@@ -45,6 +46,18 @@ void fill(const Scene& scene, const DensifyOptions& options, SphereRun<D>& run, 
   // Overlaps of epsilon r_min are allowed, to rounding (one placed at exactly epsilon r_min between
   // two spheres of r_min came out 0.050000000000000926 of it): overlap_tolerance().
   run.contact_tolerance = overlap_tolerance(scene);
+}
+
+/// The scene's void filling; with a split law, the part at or below r_s, up to the count that
+/// keeps the law's proportions with what is there (the part above it).
+template <int D>
+void fill_scene_voids(const Scene& scene, SphereRun<D>& run) {
+  DensifyOptions o = scene.densify.value_or(DensifyOptions{});
+  if (!o.split) return fill<D>(scene, o, run, *scene.radii);
+  const SplitRadius below(scene.radii, *o.split, SplitRadius::Side::Below);
+  const auto whole = static_cast<std::uint64_t>(std::ceil(static_cast<double>(run.packing.size()) / (1 - below.share_below())));
+  o.max_particles = o.max_particles ? std::min(*o.max_particles, whole) : whole;
+  fill<D>(scene, o, run, below);
 }
 
 /// Paper 000: steps 2-7a on the scene's tetrahedral mesh, then step 7b, the void filling with the
@@ -125,9 +138,15 @@ typename SpherePack<D>::Result SpherePack<D>::pack(const Scene& scene, const Pro
       return run;
     }
   }
-  static_cast<PackResult<D>&>(run) = fp::pack<D>(scene, progress, exchange);
+  if (scene.densify && scene.densify->split) {  // the front packs the law's part above the split
+    Scene above = scene;
+    above.radii = std::make_shared<const SplitRadius>(scene.radii, *scene.densify->split, SplitRadius::Side::Above);
+    static_cast<PackResult<D>&>(run) = fp::pack<D>(above, progress, exchange);
+  } else {
+    static_cast<PackResult<D>&>(run) = fp::pack<D>(scene, progress, exchange);
+  }
   const bool root = !exchange || exchange->process() == 0;  // the others hold no packing
-  if (scene.densify && root) fill<D>(scene, *scene.densify, run, *scene.radii);
+  if (scene.densify && root) fill_scene_voids<D>(scene, run);
   return run;
 }
 
@@ -137,7 +156,7 @@ typename SpherePack<D>::Result SpherePack<D>::densify(const Scene& scene, Packin
   run.given = true;
   run.packing = std::move(packing);
   run.contact_tolerance = scene.packer.contact_tolerance;
-  fill<D>(scene, scene.densify.value_or(DensifyOptions{}), run, *scene.radii);
+  fill_scene_voids<D>(scene, run);
   return run;
 }
 

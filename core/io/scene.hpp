@@ -133,6 +133,10 @@ struct DensifyOptions {
   /// Fit: a void whose own sphere does not go in (overlapping, or reduced below r_min) takes a
   /// sphere of r_min touching D of its bodies: denser, with many more spheres of r_min.
   bool fallback_r_min = false;
+  /// Distribution: split the law at this radius r_s: the packer packs its part above r_s, the
+  /// voids take its part at or below r_s, up to the count that keeps the law's proportions
+  /// (N_packed / (1 - F(r_s)) in all), so the whole stays a sample of the law.
+  std::optional<double> split;
   std::optional<double> target_volume_fraction;  ///< phi0: stop once the packing reaches it (checked after every sphere)
   std::optional<std::uint64_t> max_particles;    ///< N0: stop once the packing holds this many
 };

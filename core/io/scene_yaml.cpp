@@ -36,6 +36,7 @@
 #include "core/sampling/discrete_radius.hpp"
 #include "core/sampling/gradation_radius.hpp"
 #include "core/sampling/histogram_radius.hpp"
+#include "core/sampling/split_radius.hpp"
 #include "core/sampling/lognormal_radius.hpp"
 #include "core/sampling/truncated_normal_radius.hpp"
 #include "core/sampling/uniform_radius.hpp"
@@ -722,12 +723,13 @@ void parse_stop(const Value& v, StopCriteria& s, std::map<std::string, SourceSpo
   if (auto x = m.find("time")) s.time_limit_seconds = x->positive();
 }
 
-void parse_densify(const Value& v, int dimension, bool shapes, DensifyOptions& d, std::map<std::string, SourceSpot>& spots) {
+void parse_densify(const Value& v, int dimension, bool shapes, const RadiusDistributionPtr& law, DensifyOptions& d,
+                   std::map<std::string, SourceSpot>& spots) {
   if (shapes) v.fail("void filling adds spheres: it needs a scene of spheres (disks), not of shapes");
   spots["densify"] = v.spot();
   if (v.node().IsNull()) return;  // `densify:` alone: every default
   const Map m = v.map();
-  m.check_known({"radii", "radius_pool", "overlap", "z_min", "rounds", "volume_fraction", "particles", "fallback_r_min"});
+  m.check_known({"radii", "radius_pool", "overlap", "z_min", "rounds", "volume_fraction", "particles", "fallback_r_min", "split"});
   if (auto x = m.find("fallback_r_min")) d.fallback_r_min = x->boolean();
   if (auto x = m.find("radii")) d.radii = x->choice({"distribution", "fit"}) == "fit" ? VoidRadii::Fit : VoidRadii::Distribution;
   if (auto x = m.find("radius_pool")) {
@@ -748,6 +750,12 @@ void parse_densify(const Value& v, int dimension, bool shapes, DensifyOptions& d
     if (n == 0) x->fail("must be a positive integer (got " + x->node().Scalar() + ")");
     d.max_particles = n;
     spots["densify.particles"] = x->spot();
+  }
+  if (auto x = m.find("split")) {
+    if (d.radii != VoidRadii::Distribution) x->fail("splits the law between the packer and the voids: needs 'radii: distribution'");
+    const double r_s = x->positive();
+    construct(m, [&] { return SplitRadius(law, r_s, SplitRadius::Side::Below); });  // both sides non-empty
+    d.split = r_s;
   }
 }
 
@@ -1108,7 +1116,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
     else parse_body<2>(root, scene, ctx);
     if (auto s = root.find("stop")) parse_stop(*s, scene.stop, scene.spots);
     if (auto d = root.find("densify"))
-      parse_densify(*d, scene.dimension, !scene.particle_templates.empty(), scene.densify.emplace(), scene.spots);
+      parse_densify(*d, scene.dimension, !scene.particle_templates.empty(), scene.radii, scene.densify.emplace(), scene.spots);
     if (auto r = root.find("regions")) parse_regions(*r, scene);
     if (auto o = root.find("output")) scene.outputs = parse_outputs(*o);
   } catch (const YAML::Exception& e) {  // not expected: every access is checked first

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "cli_test_util.hpp"
 
@@ -66,6 +67,31 @@ TEST_F(CliDensify, RadiiFromTheLawPassTheRadiiTest) {
   EXPECT_EQ(run_frontpack(dir, "validate d.vtu --scene law.yaml").exit_code, 0);
 }
 
+TEST_F(CliDensify, ASplitLawKeepsItsProportionsOrSaysItCouldNot) {
+  // r in [0.01, 0.05], split at 0.015: the front packs r > 0.015, the voids take r <= 0.015 up to
+  // an eighth of the whole (F(0.015) = 1/8): the packing passes the radii test of the whole law.
+  write_bytes(dir.work() / "split.yaml", std::string(kScene) + "densify: {split: 0.015}\n");
+  const RunResult r = run_frontpack(dir, "pack split.yaml -o s.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("void filling: particle count"), std::string::npos) << "stopped at the law's proportion: " << r.out;
+  std::size_t small = 0, all = 0;
+  for (const std::string& line : lines_of(read_bytes(dir.work() / "s.csv"))) {
+    std::vector<double> v;
+    if (!parse_numbers(line, ',', v) || v.size() != 5) continue;
+    ++all;
+    small += v[4] <= 0.015;
+  }
+  EXPECT_NEAR(static_cast<double>(small), static_cast<double>(all) / 8, 1.0) << all << " spheres";
+  EXPECT_EQ(run_frontpack(dir, "validate s.csv --scene split.yaml").exit_code, 0);
+  // Split high, the voids cannot take their share: the radii test says so (exit 3), the files are written.
+  write_bytes(dir.work() / "high.yaml", "dimension: 3\nseed: 4\ncontainer: {type: box, min: [0, 0, 0], max: [0.6, 0.6, 0.6]}\n"
+                                        "particles: {radius: {distribution: uniform, min: 0.01, max: 0.05}}\n"
+                                        "densify: {split: 0.04}\n");
+  const RunResult high = run_frontpack(dir, "pack high.yaml -o h.csv");
+  EXPECT_EQ(high.exit_code, 3) << high.out;
+  EXPECT_NE(high.err.find("size test"), std::string::npos) << high.err;
+}
+
 TEST_F(CliDensify, BadInputExitsTwoAndWritesNothing) {
   const auto nothing_new = [&](const RunResult& r, const std::string& what, const std::string& message) {
     EXPECT_EQ(r.exit_code, 2) << what << ": " << r.err;
@@ -79,6 +105,10 @@ TEST_F(CliDensify, BadInputExitsTwoAndWritesNothing) {
   write_bytes(dir.work() / "z.yaml", std::string(kScene) + "densify: {z_min: 5}\n");
   nothing_new(run_frontpack(dir, "densify p.csv --scene z.yaml -o out.csv"), "z_min", "densify.z_min");
   nothing_new(run_frontpack(dir, "pack z.yaml -o out.csv"), "z_min in pack", "must be an integer from 1 to 4");
+  write_bytes(dir.work() / "split.yaml", std::string(kScene) + "densify: {split: 0.06}\n");
+  nothing_new(run_frontpack(dir, "pack split.yaml -o out.csv"), "split beyond the law", "densify");
+  write_bytes(dir.work() / "splitfit.yaml", std::string(kScene) + "densify: {radii: fit, split: 0.02}\n");
+  nothing_new(run_frontpack(dir, "pack splitfit.yaml -o out.csv"), "split with fit", "needs 'radii: distribution'");
   write_bytes(dir.work() / "eps.yaml", std::string(kScene) + "densify: {overlap: -0.1}\n");
   nothing_new(run_frontpack(dir, "densify p.csv --scene eps.yaml -o out.csv"), "overlap", "densify.overlap");
   write_bytes(dir.work() / "shapes.yaml",
