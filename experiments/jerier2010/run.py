@@ -6,7 +6,7 @@ against R = r_max / r_min, filled until no sphere fits, and with the target phi0
 Fig. 8 (time against the number of tetrahedra at phi0 = 0.6, and against phi0), each with
 epsilon = 0 and a small epsilon.
 
-Usage: run.py FRONTPACK OUT_DIR [--quick]
+Usage: run.py FRONTPACK OUT_DIR [--quick] [--only-stl]
 The meshes are Kuhn cubes (cube_mesh.py: n^3 sub-cubes of 6 tetrahedra, interior nodes jittered by
 0.2 of the spacing); radii sized as the paper does, mean radius = mean edge / 8. The solid
 fraction phi is the paper's Eq. 16, in a spherical probe (the analysis' reference ball, radius
@@ -37,13 +37,21 @@ def mean_edge(n):
     return (3 + 3 * 2 ** 0.5 + 3 ** 0.5) / 7 * h
 
 
+# The unit cube's surface (tests/data/meshes/cube.stl), meshed by frontpack itself (CGAL Mesh_3) with
+# edges of 0.15: 1,302 tetrahedra, whose mean volume makes a regular tetrahedron of edge 0.187.
+STL_CUBE = os.path.join(HERE, "..", "..", "tests", "data", "meshes", "cube.stl")
+STL_EDGE, STL_MEAN_EDGE = 0.15, 0.187
+
+
 def run(frontpack, out, tag, n, ratio, eps=0.0, phi0=None, loose=False, seed=1, fallback=False):
-    r_mean = mean_edge(n) / 8
+    """n > 0: a Kuhn cube of n^3 sub-cubes; n = 0: the STL cube meshed by frontpack."""
+    r_mean = (mean_edge(n) if n else STL_MEAN_EDGE) / 8
     r_min = 2 * r_mean / (1 + ratio)
     r_max = ratio * r_min
     packer = (f"{{method: tet_mesh, overlap: {eps}{', loose: true' if loose else ''}"
-              f"{', fallback_r_min: true' if fallback else ''}}}")
-    scene = (f"dimension: 3\nseed: {seed}\ncontainer: {{type: mesh, file: {mesh(out, n)}}}\n"
+              f"{', fallback_r_min: true' if fallback else ''}{'' if n else f', mesh_edge: {STL_EDGE}'}}}")
+    container = mesh(out, n) if n else os.path.abspath(STL_CUBE)
+    scene = (f"dimension: 3\nseed: {seed}\ncontainer: {{type: mesh, file: {container}}}\n"
              f"particles: {{radius: {{distribution: uniform, min: {r_min!r}, max: {r_max!r}}}}}\npacker: {packer}\n")
     if phi0:
         scene += f"stop: {{volume_fraction: {phi0}}}\n"
@@ -91,6 +99,13 @@ def main():
     quick = "--quick" in sys.argv
     os.makedirs(out, exist_ok=True)
     rows = []
+    if "--only-stl" in sys.argv:  # the unstructured rows alone
+        for R in [2, 3, 4, 5, 6, 7]:
+            for tag, kw in [(f"fig4a-R{R}-stl", {}), (f"fig4b-R{R}-stl", {"phi0": 0.46, "loose": True})]:
+                rows.append(run(frontpack, out, tag, 0, R, 0.0, **kw))
+                print(json.dumps({k: v for k, v in rows[-1].items() if k not in ("rdf_r", "rdf_g", "partial_z")}), flush=True)
+        json.dump(rows, open(os.path.join(out, "results-stl.json"), "w"))
+        return
     ratios = [2, 3, 4, 5, 6, 7]
     for eps in (0.0, 0.05):
         for R in ratios:  # Fig. 4a, 6b, 7: filled until no sphere fits
@@ -102,6 +117,10 @@ def main():
     for R in ratios:  # Fig. 4a beyond the paper: voids whose own sphere fails take one of r_min
         rows.append(run(frontpack, out, f"fig4a-R{R}-fallback", 6, R, 0.0, fallback=True))
         print(json.dumps({k: v for k, v in rows[-1].items() if k not in ("rdf_r", "rdf_g", "partial_z")}), flush=True)
+    for R in ratios:  # Fig. 4 on an unstructured mesh (frontpack's own meshing of the STL cube)
+        for tag, kw in [(f"fig4a-R{R}-stl", {}), (f"fig4b-R{R}-stl", {"phi0": 0.46, "loose": True})]:
+            rows.append(run(frontpack, out, tag, 0, R, 0.0, **kw))
+            print(json.dumps({k: v for k, v in rows[-1].items() if k not in ("rdf_r", "rdf_g", "partial_z")}), flush=True)
     sizes = [4, 6, 8, 10, 13] if quick else [4, 6, 8, 10, 13, 16, 20, 27]
     for n in sizes:  # Fig. 8a: time against the number of tetrahedra, phi0 = 0.6
         rows.append(run(frontpack, out, f"fig8a-n{n}", n, 4, 0.0, phi0=0.6))
