@@ -63,7 +63,7 @@ class VoidFiller {
 
   VoidFiller(Packing<D>& packing, const Container<D>& container, const RadiusDistribution& dist, const DensifyOptions& o,
              std::uint64_t seed, double tol, const VoidRegion<D>* region)
-      : P_(packing), C_(container), dist_(dist), o_(o), tol_(tol), rng_(seed ^ kStream), region_(region),
+      : P_(packing), C_(container), dist_(dist), o_(o), rng_(seed ^ kStream), region_(region),
         r_min_(dist.r_min()), r_max_(dist.r_max()), allowance_(o.overlap * dist.r_min()),
         z_min_(o.z_min > 0 ? o.z_min : D), measure_(region ? region->measure : container.measure()),
         grid_(container.bounds(), std::min(r_min_, smallest_radius(packing)), std::max(r_max_, largest_radius(packing))),
@@ -383,7 +383,6 @@ class VoidFiller {
   const Container<D>& C_;
   const RadiusDistribution& dist_;
   const DensifyOptions& o_;
-  double tol_;
   Rng rng_;
   const VoidRegion<D>* region_;
   double r_min_, r_max_, allowance_;

@@ -47,7 +47,7 @@ class TetFiller {
  public:
   TetFiller(const TetMesh& mesh, const Container<3>& container, const RadiusDistribution& dist, const TetFillOptions& o,
             std::uint64_t seed, double tol, Packing<3>& out)
-      : mesh_(mesh), C_(container), o_(o), rng_(seed ^ kStream), regions_(regions_of(mesh, dist, o)),
+      : mesh_(mesh), C_(container), o_(o), rng_(seed ^ kStream), regions_(regions_of(dist, o)),
         r_min_(smallest(regions_)), r_max_(largest(regions_)), P_(out), grid_(container.bounds(), r_min_, r_max_),
         place_(out, grid_, nullptr, r_min_, tol, o.overlap * r_min_, 0), tol_(tol) {
     if (!o.tet_region.empty()) locator_.emplace(mesh);
@@ -127,8 +127,7 @@ class TetFiller {
  private:
   static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
-  static std::vector<Region> regions_of(const TetMesh& mesh, const RadiusDistribution& dist, const TetFillOptions& o) {
-    (void)mesh;
+  static std::vector<Region> regions_of(const RadiusDistribution& dist, const TetFillOptions& o) {
     std::vector<Region> out;
     const std::vector<TetRegion> given = o.regions.empty() ? std::vector<TetRegion>{TetRegion{}} : o.regions;
     for (const TetRegion& g : given) {
@@ -195,7 +194,7 @@ class TetFiller {
     near_.clear();
     for (double reach = 2 * r_max_; near_.size() < 4 && reach < 64 * r_max_; reach *= 2) {
       near_.clear();
-      grid_.for_each_within(p, reach, [&](int id, const Vec3& c, double r, double d2) {
+      grid_.for_each_within(p, reach, [&](int id, const Vec3&, double r, double d2) {
         near_.push_back({std::sqrt(d2) - r, id});
       });
     }

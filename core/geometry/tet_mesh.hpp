@@ -27,6 +27,10 @@ struct TetMesh {
   std::map<std::pair<int, int>, std::string> group_names;
 };
 
+/// The faces of a positively oriented tetrahedron (node 3 on the side the right-hand normal of
+/// 0-1-2 points to), by their nodes' places in it, each turned outwards.
+inline constexpr int kTetOutwardFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
 /// The volume of tetrahedron t.
 inline double tet_volume(const TetMesh& mesh, std::size_t t) {
   const auto& v = mesh.tets[t];

@@ -42,9 +42,8 @@ std::string tet_mesh_problem(const TetMesh& mesh, bool boundary_closes) {
     int count = 0, orientation = 0;
   };
   std::map<std::array<std::uint32_t, 3>, FaceUse> faces;
-  static constexpr int kOutward[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
   for (const auto& n : mesh.tets)
-    for (const auto& face : kOutward) {
+    for (const auto& face : kTetOutwardFaces) {
       std::array<std::uint32_t, 3> f = {n[static_cast<std::size_t>(face[0])], n[static_cast<std::size_t>(face[1])],
                                         n[static_cast<std::size_t>(face[2])]};
       const int inversions = (f[0] > f[1]) + (f[0] > f[2]) + (f[1] > f[2]);

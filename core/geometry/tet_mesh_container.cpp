@@ -7,8 +7,6 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Geometry>
-
 #include "core/geometry/local_frame.hpp"
 #include "core/geometry/msh_reader.hpp"
 #include "core/geometry/tet_mesh_check.hpp"
@@ -16,25 +14,19 @@
 namespace fp {
 namespace {
 
-/// The faces of one tetrahedron, each turned away from the tetrahedron's fourth node.
+/// The faces of one tetrahedron, turned outwards (tet_mesh_problem has checked every tetrahedron
+/// positive), in the order of their sorted nodes.
 std::vector<std::array<int, 3>> boundary_faces(const TetMesh& mesh) {
-  std::map<std::array<std::uint32_t, 3>, std::pair<int, std::array<int, 3>>> seen;  // sorted face -> (count, oriented)
-  for (const auto& t : mesh.tets) {
-    for (int skip = 0; skip < 4; ++skip) {
+  std::map<std::array<std::uint32_t, 3>, std::pair<int, std::array<int, 3>>> seen;  // sorted face -> (count, outward)
+  for (const auto& t : mesh.tets)
+    for (const auto& face : kTetOutwardFaces) {
       std::array<int, 3> f{};
-      int k = 0;
-      for (int i = 0; i < 4; ++i)
-        if (i != skip) f[static_cast<std::size_t>(k++)] = static_cast<int>(t[static_cast<std::size_t>(i)]);
-      const Vec3 &a = mesh.nodes[static_cast<std::size_t>(f[0])], &b = mesh.nodes[static_cast<std::size_t>(f[1])],
-                 &c = mesh.nodes[static_cast<std::size_t>(f[2])], &opposite = mesh.nodes[t[static_cast<std::size_t>(skip)]];
-      if ((b - a).cross(c - a).dot(opposite - a) > 0) std::swap(f[1], f[2]);
-      std::array<std::uint32_t, 3> key = {static_cast<std::uint32_t>(f[0]), static_cast<std::uint32_t>(f[1]),
-                                          static_cast<std::uint32_t>(f[2])};
+      for (int k = 0; k < 3; ++k) f[static_cast<std::size_t>(k)] = static_cast<int>(t[static_cast<std::size_t>(face[k])]);
+      std::array<std::uint32_t, 3> key = {t[static_cast<std::size_t>(face[0])], t[static_cast<std::size_t>(face[1])],
+                                          t[static_cast<std::size_t>(face[2])]};
       std::sort(key.begin(), key.end());
-      auto [it, fresh] = seen.try_emplace(key, 0, f);
-      ++it->second.first;
+      ++seen.try_emplace(key, 0, f).first->second.first;
     }
-  }
   std::vector<std::array<int, 3>> faces;
   for (const auto& [key, entry] : seen)
     if (entry.first == 1) faces.push_back(entry.second);

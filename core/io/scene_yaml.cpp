@@ -566,6 +566,13 @@ RadiusDistributionPtr parse_distribution(const Value& v, int dimension) {
 
 const Keys kMinimisationAlgorithms = {"newton", "slsqp", "lbfgs", "nelder-mead", "cobyla", "sbplx"};
 
+/// A count of particles (N0): a positive integer, 1e6 written as a float too.
+std::uint64_t particle_count(const Value& x) {
+  const std::uint64_t n = x.unsigned_integer(true);
+  if (n == 0) x.fail("must be a positive integer (got " + x.node().Scalar() + ")");
+  return n;
+}
+
 /// A solid fraction (phi0): in (0, 1).
 double solid_fraction(const Value& x) {
   const double phi = x.number();
@@ -630,7 +637,6 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
   }
   if (auto x = m.find("method")) {
     p.method = x->choice({"front", "tet_mesh"});
-    spots["packer.method"] = x->spot();
     if (p.method == "tet_mesh" && (D != 3 || shapes))
       x->fail("the tetrahedral-mesh packer (paper 000) packs spheres in 3D: it needs dimension: 3 and 'particles: {radius: ...}'");
   }
@@ -711,9 +717,7 @@ void parse_stop(const Value& v, StopCriteria& s, std::map<std::string, SourceSpo
   m.check_known({"particles", "volume_fraction", "time"});
   spots["stop"] = v.spot();
   if (auto x = m.find("particles")) {
-    const std::uint64_t n = x->unsigned_integer(true);
-    if (n == 0) x->fail("must be a positive integer (got " + x->node().Scalar() + ")");
-    s.max_particles = n;
+    s.max_particles = particle_count(*x);
     spots["stop.particles"] = x->spot();
   }
   if (auto x = m.find("volume_fraction")) {
@@ -723,10 +727,8 @@ void parse_stop(const Value& v, StopCriteria& s, std::map<std::string, SourceSpo
   if (auto x = m.find("time")) s.time_limit_seconds = x->positive();
 }
 
-void parse_densify(const Value& v, int dimension, bool shapes, const RadiusDistributionPtr& law, DensifyOptions& d,
-                   std::map<std::string, SourceSpot>& spots) {
+void parse_densify(const Value& v, int dimension, bool shapes, const RadiusDistributionPtr& law, DensifyOptions& d) {
   if (shapes) v.fail("void filling adds spheres: it needs a scene of spheres (disks), not of shapes");
-  spots["densify"] = v.spot();
   if (v.node().IsNull()) return;  // `densify:` alone: every default
   const Map m = v.map();
   m.check_known({"radii", "radius_pool", "overlap", "z_min", "rounds", "volume_fraction", "particles", "fallback_r_min", "split"});
@@ -745,12 +747,7 @@ void parse_densify(const Value& v, int dimension, bool shapes, const RadiusDistr
     d.rounds = static_cast<int>(n);
   }
   if (auto x = m.find("volume_fraction")) d.target_volume_fraction = solid_fraction(*x);
-  if (auto x = m.find("particles")) {
-    const std::uint64_t n = x->unsigned_integer(true);
-    if (n == 0) x->fail("must be a positive integer (got " + x->node().Scalar() + ")");
-    d.max_particles = n;
-    spots["densify.particles"] = x->spot();
-  }
+  if (auto x = m.find("particles")) d.max_particles = particle_count(*x);
   if (auto x = m.find("split")) {
     if (d.radii != VoidRadii::Distribution) x->fail("splits the law between the packer and the voids: needs 'radii: distribution'");
     const double r_s = x->positive();
@@ -1116,7 +1113,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
     else parse_body<2>(root, scene, ctx);
     if (auto s = root.find("stop")) parse_stop(*s, scene.stop, scene.spots);
     if (auto d = root.find("densify"))
-      parse_densify(*d, scene.dimension, !scene.particle_templates.empty(), scene.radii, scene.densify.emplace(), scene.spots);
+      parse_densify(*d, scene.dimension, !scene.particle_templates.empty(), scene.radii, scene.densify.emplace());
     if (auto r = root.find("regions")) parse_regions(*r, scene);
     if (auto o = root.find("output")) scene.outputs = parse_outputs(*o);
   } catch (const YAML::Exception& e) {  // not expected: every access is checked first
