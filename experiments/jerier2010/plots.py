@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Figures of experiments/jerier2010 from run.py's results.json, beside paper 000's Figs. 4, 6, 7, 8.
-Usage: plots.py OUT_DIR (reads OUT_DIR/results.json, writes OUT_DIR/fig*.png and prints the tables)."""
+Usage: plots.py OUT_DIR [--unstructured] (reads OUT_DIR/results.json, or results-unstructured.json, writes
+OUT_DIR/fig*.png (fig*-unstructured.png) and prints the tables)."""
 import json
 import os
 import sys
@@ -11,8 +12,88 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
+def stats(values):
+    n = len(values)
+    mean = sum(values) / n
+    return mean, (sum((v - mean) ** 2 for v in values) / (n - 1)) ** 0.5 if n > 1 else 0.0
+
+
+def unstructured(out):
+    """Figs. 4, 6, 7, 8 on the STL cube meshed by frontpack, mean and spread over the seeds."""
+    rows = json.load(open(os.path.join(out, "results-unstructured.json")))
+    seeds = sorted({r["seed"] for r in rows})
+    group = lambda stem: [r for r in rows if r["tag"].rsplit("-s", 1)[0] == stem]
+
+    fig, ax = plt.subplots(1, 2, figsize=(10, 4))
+    for name, stem in [("filled, eps 0", "u4a-R{}-eps0.0"), ("filled, eps 0.05", "u4a-R{}-eps0.05"),
+                       ("phi0 0.46 loose", "u4b-R{}")]:
+        Rs = [2, 3, 4, 5, 6, 7]
+        for k, key in enumerate(["phi_probe", "z"]):
+            ms = [stats([r[key] for r in group(stem.format(R))]) for R in Rs]
+            ax[k].errorbar(Rs, [m for m, _ in ms], yerr=[e for _, e in ms], fmt="o-", capsize=3, label=name)
+    ax[0].set_xlabel("R"), ax[0].set_ylabel("solid fraction in the probe (Eq. 16)"), ax[0].legend()
+    ax[1].set_xlabel("R"), ax[1].set_ylabel("coordination z"), ax[1].legend()
+    fig.suptitle(f"unstructured mesh (STL cube meshed by frontpack), seeds {seeds}")
+    fig.tight_layout(), fig.savefig(os.path.join(out, "fig4-unstructured.png"), dpi=110)
+
+    fig, ax = plt.subplots(1, 2, figsize=(10, 4))
+    for name, stem, c in [("loose, phi0 0.46", "u4b-R7", "C0"), ("dense", "u4a-R7-eps0.0", "C1"),
+                          ("dense + r_min fallback", "u4a-R7-eps0.0-fallback", "C2")]:
+        for k, r in enumerate(group(stem)):
+            label = f"{name} (phi {stats([x['phi_probe'] for x in group(stem)])[0]:.3f})" if k == 0 else None
+            ax[0].plot(r["partial_z"]["xi"], r["partial_z"]["z"], "o-", c=c, ms=3, label=label)
+            bins = len(r["radii_pdf"])
+            centres = [r["r_min"] + (q + 0.5) * (r["r_max"] - r["r_min"]) / bins for q in range(bins)]
+            ax[1].plot(centres, r["radii_pdf"], "-", c=c, label=name if k == 0 else None)
+    ax[0].set_xlabel("xi"), ax[0].set_ylabel("z(xi)"), ax[0].legend()
+    ax[1].set_xlabel("radius"), ax[1].set_ylabel("pdf"), ax[1].set_yscale("log"), ax[1].legend()
+    fig.tight_layout(), fig.savefig(os.path.join(out, "fig6-unstructured.png"), dpi=110)
+
+    fig, ax = plt.subplots(1, 2, figsize=(10, 4))
+    Rs = [2, 3, 4, 5, 6, 7]
+    for k in range(3):
+        ms = [stats([sorted(r["fabric"]["eigenvalues"])[k] for r in group(f"u4a-R{R}-eps0.0")]) for R in Rs]
+        ax[0].errorbar(Rs, [m for m, _ in ms], yerr=[e for _, e in ms], fmt="o-", capsize=3, label=f"F{k + 1}")
+    ax[0].axhline(1 / 3, ls="--", c="k"), ax[0].set_xlabel("R"), ax[0].set_ylabel("fabric eigenvalues"), ax[0].legend()
+    for R in [2, 4, 6]:
+        r = group(f"u4a-R{R}-eps0.0")[0]
+        ax[1].plot(r["rdf_r"], r["rdf_g"], label=f"R = {R}")
+    ax[1].set_xlabel("r / <d>"), ax[1].set_ylabel("g(r)"), ax[1].legend()
+    fig.tight_layout(), fig.savefig(os.path.join(out, "fig7-unstructured.png"), dpi=110)
+
+    fig, ax = plt.subplots(1, 2, figsize=(10, 4))
+    for seed in seeds:
+        rs = sorted([r for r in rows if r["tag"].startswith("u8a-") and r["seed"] == seed], key=lambda r: r["tets"])
+        ax[0].plot([r["tets"] for r in rs], [r["pack_s"] for r in rs], "o-", label=f"seed {seed}")
+        rs = sorted([r for r in rows if r["tag"].startswith("u8b-") and r["seed"] == seed], key=lambda r: r["phi0"])
+        ax[1].plot([r["phi_container"] for r in rs], [r["pack_s"] for r in rs], "o-", label=f"seed {seed}")
+    ax[0].set_xlabel("tetrahedra"), ax[0].set_ylabel("pack seconds (steps 2-7b)"), ax[0].legend()
+    ax[1].set_xlabel("solid fraction reached (container)"), ax[1].set_ylabel("pack seconds"), ax[1].legend()
+    fig.tight_layout(), fig.savefig(os.path.join(out, "fig8-unstructured.png"), dpi=110)
+
+    print("| runs | tets | R | eps | N | phi probe | phi container | z | F1 F2 F3 | pack s | max overlap / r_min |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    stems = []
+    for r in rows:
+        stem = r["tag"].rsplit("-s", 1)[0]
+        if stem not in stems:
+            stems.append(stem)
+    for stem in stems:
+        g = group(stem)
+        ev = [stats([sorted(r["fabric"]["eigenvalues"])[k] for r in g])[0] for k in range(3)]
+        pm, ps = stats([r["phi_probe"] for r in g])
+        cm, cs = stats([r["phi_container"] for r in g])
+        zm, zs = stats([r["z"] for r in g])
+        print(f"| {stem} (x{len(g)}) | {g[0]['tets']} | {g[0]['R']} | {g[0]['eps']} | {stats([r['N'] for r in g])[0]:.0f} | "
+              f"{pm:.4f} +- {ps:.4f} | {cm:.4f} +- {cs:.4f} | {zm:.2f} +- {zs:.2f} | {ev[0]:.3f} {ev[1]:.3f} {ev[2]:.3f} | "
+              f"{min(r['pack_s'] for r in g):.2f} .. {max(r['pack_s'] for r in g):.2f} | {max(r['max_overlap_rmin'] for r in g):.2g} |")
+
+
 def main():
     out = sys.argv[1]
+    if "--unstructured" in sys.argv:
+        unstructured(out)
+        return
     rows = json.load(open(os.path.join(out, "results.json")))
     pick = lambda prefix: [r for r in rows if r["tag"].startswith(prefix)]
 

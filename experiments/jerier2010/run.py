@@ -6,7 +6,7 @@ against R = r_max / r_min, filled until no sphere fits, and with the target phi0
 Fig. 8 (time against the number of tetrahedra at phi0 = 0.6, and against phi0), each with
 epsilon = 0 and a small epsilon.
 
-Usage: run.py FRONTPACK OUT_DIR [--quick] [--only-stl]
+Usage: run.py FRONTPACK OUT_DIR [--quick] [--only-stl | --unstructured]
 The meshes are Kuhn cubes (cube_mesh.py: n^3 sub-cubes of 6 tetrahedra, interior nodes jittered by
 0.2 of the spacing); radii sized as the paper does, mean radius = mean edge / 8. The solid
 fraction phi is the paper's Eq. 16, in a spherical probe (the analysis' reference ball, radius
@@ -40,16 +40,17 @@ def mean_edge(n):
 # The unit cube's surface (tests/data/meshes/cube.stl), meshed by frontpack itself (CGAL Mesh_3) with
 # edges of 0.15: 1,302 tetrahedra, whose mean volume makes a regular tetrahedron of edge 0.187.
 STL_CUBE = os.path.join(HERE, "..", "..", "tests", "data", "meshes", "cube.stl")
+# Other edges scale the mean edge alike (1.247 times the edge asked for).
 STL_EDGE, STL_MEAN_EDGE = 0.15, 0.187
 
 
-def run(frontpack, out, tag, n, ratio, eps=0.0, phi0=None, loose=False, seed=1, fallback=False):
-    """n > 0: a Kuhn cube of n^3 sub-cubes; n = 0: the STL cube meshed by frontpack."""
-    r_mean = (mean_edge(n) if n else STL_MEAN_EDGE) / 8
+def run(frontpack, out, tag, n, ratio, eps=0.0, phi0=None, loose=False, seed=1, fallback=False, stl_edge=STL_EDGE):
+    """n > 0: a Kuhn cube of n^3 sub-cubes; n = 0: the STL cube meshed by frontpack with edges stl_edge."""
+    r_mean = (mean_edge(n) if n else STL_MEAN_EDGE * stl_edge / STL_EDGE) / 8
     r_min = 2 * r_mean / (1 + ratio)
     r_max = ratio * r_min
     packer = (f"{{method: tet_mesh, overlap: {eps}{', loose: true' if loose else ''}"
-              f"{', fallback_r_min: true' if fallback else ''}{'' if n else f', mesh_edge: {STL_EDGE}'}}}")
+              f"{', fallback_r_min: true' if fallback else ''}{'' if n else f', mesh_edge: {stl_edge}'}}}")
     container = mesh(out, n) if n else os.path.abspath(STL_CUBE)
     scene = (f"dimension: 3\nseed: {seed}\ncontainer: {{type: mesh, file: {container}}}\n"
              f"particles: {{radius: {{distribution: uniform, min: {r_min!r}, max: {r_max!r}}}}}\npacker: {packer}\n")
@@ -68,7 +69,7 @@ def run(frontpack, out, tag, n, ratio, eps=0.0, phi0=None, loose=False, seed=1, 
     r = json.load(open(rec))
     m, a, c = r["metrics"], r["analysis"], r["counters"]
     return {
-        "tag": tag, "n_mesh": n, "tets": c["tet_tetrahedra"], "R": ratio, "eps": eps, "phi0": phi0, "loose": loose,
+        "tag": tag, "seed": seed, "n_mesh": n, "tets": c["tet_tetrahedra"], "R": ratio, "eps": eps, "phi0": phi0, "loose": loose,
         "fallback": fallback,
         "N": r["n"], "phi_probe": m["volume_fraction_reference_sphere"], "phi_container": m["volume_fraction_container"],
         "phi_core": m["volume_fraction_core"], "z": m["mean_coordination"], "z_walls": m["mean_coordination_with_walls"],
@@ -94,11 +95,37 @@ def radii_pdf(csv, r_min, r_max, bins=24):
     return [c / (n * width) for c in counts]
 
 
+def unstructured(frontpack, out):
+    """Figs. 4, 6, 7 and 8 on the STL cube meshed by frontpack, three seeds each (the seed moves the
+    radii drawn and so every sphere; the mesh is the mesher's, the same for every seed)."""
+    rows = []
+
+    def add(*args, **kw):
+        rows.append(run(frontpack, out, *args, **kw))
+        print(json.dumps({k: v for k, v in rows[-1].items() if k not in ("rdf_r", "rdf_g", "partial_z", "radii_pdf")}), flush=True)
+
+    for seed in (1, 2, 3):
+        for R in [2, 3, 4, 5, 6, 7]:
+            add(f"u4a-R{R}-eps0.0-s{seed}", 0, R, 0.0, seed=seed)
+            add(f"u4a-R{R}-eps0.05-s{seed}", 0, R, 0.05, seed=seed)
+            add(f"u4b-R{R}-s{seed}", 0, R, 0.0, phi0=0.46, loose=True, seed=seed)
+        for eps in (0.0, 0.05, 0.1, 0.2):  # the densest: voids whose own sphere fails take one of r_min
+            add(f"u4a-R7-eps{eps}-fallback-s{seed}", 0, 7, eps, fallback=True, seed=seed)
+        for edge in (0.3, 0.2, 0.15, 0.1, 0.07, 0.05, 0.035):  # Fig. 8a at phi0 = 0.6, R = 4
+            add(f"u8a-e{edge}-s{seed}", 0, 4, 0.0, phi0=0.6, seed=seed, stl_edge=edge)
+        for phi0 in [0.45, 0.5, 0.55, 0.6, 0.62, 0.64, 0.66]:  # Fig. 8b against phi0
+            add(f"u8b-phi{phi0}-s{seed}", 0, 4, 0.0, phi0=phi0, seed=seed, stl_edge=0.1)
+    json.dump(rows, open(os.path.join(out, "results-unstructured.json"), "w"))
+
+
 def main():
     frontpack, out = sys.argv[1], sys.argv[2]
     quick = "--quick" in sys.argv
     os.makedirs(out, exist_ok=True)
     rows = []
+    if "--unstructured" in sys.argv:
+        unstructured(frontpack, out)
+        return
     if "--only-stl" in sys.argv:  # the unstructured rows alone
         for R in [2, 3, 4, 5, 6, 7]:
             for tag, kw in [(f"fig4a-R{R}-stl", {}), (f"fig4b-R{R}-stl", {"phi0": 0.46, "loose": True})]:
