@@ -47,6 +47,9 @@ PackCheck pack_check_of(const PackingAnalysis& a) {
   const double n = static_cast<double>(a.particles);
   c.metrics = {{"volume_fraction_core", a.vf_core.vf.value},
                {"volume_fraction_reference_sphere", a.vf_reference},
+               {"volume_fraction_cells_mean", a.vf_cells.mean},
+               {"volume_fraction_cells_std", a.vf_cells.std_dev},
+               {"volume_fraction_cells_worst", a.vf_cells.worst},
                {"reference_sphere_radius", a.reference_radius},
                {"mean_coordination_with_walls", cs.mean_coordination_with_walls},
                {"rattler_fraction", n > 0 ? static_cast<double>(cs.rattlers) / n : 0.0},

@@ -118,6 +118,8 @@ PackingAnalysis analyze_shape_packing(const ShapePacking<D>& packing, const Cont
       a.vf_container = vf_region<D>(bodies, container, 0.0, options.qmc);
     }
     a.vf_core = vf_region<D>(bodies, container, 2.0 * bounding_max, options.qmc);
+    // Per cell, each particle as its ball of the same volume (cells are many diameters wide).
+    a.vf_cells = cell_volume_fraction_auto(balls, container, a.r_mean, bounding_max);
   });
 
   timed_step(t, "g(r)", [&] { a.rdf = radial_distribution(balls, container, options.rdf, std::max(options.threads, 1)); });

@@ -10,7 +10,9 @@
 //  * VF of the container: the shapes' exact measures; VF of the core and in the reference ball:
 //    whole particles inside by their exact measure, the ones the boundary cuts by QMC against
 //    Shape::contains (container_volume_fraction.hpp);
-//  * homogeneity of the centres with the margin of the largest circumscribed radius;
+//  * homogeneity of the centres with the margin of the largest circumscribed radius; the VF in
+//    cells (a uniformity figure over cells of 8 mean diameters) with each particle as its ball
+//    of the same volume at its centre;
 //  * the size test: the validator's (one template); the orientation tensor of the body x axes
 //    and its nematic order.
 #include <cmath>

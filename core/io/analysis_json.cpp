@@ -94,7 +94,11 @@ std::string analysis_json(const PackingAnalysis& a, bool include_timings) {
       {"reference", Json{{"center", a.reference_center}, {"radius", a.reference_radius}, {"value", a.vf_reference}}},
       {"curve", Json{{"r_ref", curve_r}, {"vf", curve_vf}}},
       {"container", region_json(a.vf_container)},
-      {"core", region_json(a.vf_core)}};
+      {"core", region_json(a.vf_core)},
+      {"cells", Json{{"edge", a.vf_cells.edge}, {"diameters", a.vf_cells.diameters}, {"margin", a.vf_cells.margin},
+                     {"cells", a.vf_cells.cells}, {"mean", a.vf_cells.mean}, {"std_dev", a.vf_cells.std_dev},
+                     {"min", a.vf_cells.min}, {"max", a.vf_cells.max}, {"worst", a.vf_cells.worst},
+                     {"worst_centre", a.vf_cells.worst_centre}}}};
 
   const ContactStats& c = a.coordination;
   const PartialCoordination& pc = a.partial_coordination;

@@ -12,25 +12,12 @@
 #include "core/geometry/ball_container.hpp"
 #include "core/geometry/box_container.hpp"
 #include "core/geometry/cylinder_container.hpp"
+#include "core/metrics/ball_box.hpp"
 #include "core/metrics/compensated_sum.hpp"
 #include "core/metrics/lens.hpp"
 
 namespace fp {
 namespace {
-
-// Measure of the part of a ball of radius r on the inner side of a plane at signed distance t
-// from its centre (t > 0: the centre is on the inner side), |t| < r. The cut-off cap has height
-// h = r - t: volume pi h^2 (3r - h) / 3 in 3D, segment area r^2 acos(1 - h/r) - (r - h) sqrt(h (2r - h))
-// in 2D. Subtracting from the whole ball keeps the absolute error at rounding level.
-template <int D>
-double ball_inside_plane(double r, double t) {
-  const double h = r - t;
-  double cap;
-  if constexpr (D == 3) cap = kPi * h * h * (3.0 * r - h) / 3.0;
-  else
-    cap = r * r * std::acos(std::clamp(1.0 - h / r, -1.0, 1.0)) - (r - h) * std::sqrt(std::max(0.0, h * (2.0 * r - h)));
-  return ball_measure<D>(r) - cap;
-}
 
 enum class CutKind { Outside, Inside, Exact, Sample };
 struct Cut {

@@ -61,6 +61,12 @@ std::string PackingAnalysis::summary() const {
        vf_curve.size(), radius_name == "r" ? "" : "; QMC for the particles it cuts");
   line("VF container         %s", estimate(vf_container).c_str());
   line("VF core              %s, 2 r_max = %.6g inside", estimate(vf_core).c_str(), vf_core.shrink);
+  if (vf_cells.computed())
+    line("VF cells             mean %.4f, sd %.4f, range [%.4f, %.4f] over %llu cells of %g <d> (edge %.6g), 2 r_max inside",
+         vf_cells.mean, vf_cells.std_dev, vf_cells.min, vf_cells.max, static_cast<unsigned long long>(vf_cells.cells),
+         vf_cells.diameters, vf_cells.edge);
+  else
+    line("VF cells             none: no cell of 2 mean diameters fits 2 r_max inside the container");
   line("coordination z       %.4f (%.4f with walls), %llu rattlers, tol %.3g", coordination.mean_coordination,
        coordination.mean_coordination_with_walls, static_cast<unsigned long long>(coordination.rattlers),
        contact_tolerance);
@@ -197,6 +203,9 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
     }
     a.vf_container = vf_region(packing, *container, 0.0, options.qmc);
     a.vf_core = vf_region(packing, *container, 2.0 * a.r_max, options.qmc);
+  });
+  steps.emplace_back("cells", [&] {
+    a.vf_cells = cell_volume_fraction_auto(packing, *container, a.r_mean, a.r_max);
   });
   std::vector<double> seconds(steps.size(), 0.0);
   for_each_part(steps.size(), threads, [&](std::size_t k) {

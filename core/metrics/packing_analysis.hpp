@@ -4,6 +4,7 @@
 // carries. Definitions, each in its own file:
 //   VF in a reference ball and the VF-vs-r_ref curve ... volume_fraction.hpp (paper 002 Eq. 2, Sect. 5)
 //   VF of the container and of its core ............... container_volume_fraction.hpp (paper 000 Eq. 16)
+//   VF in cells of a few mean diameters (uniformity) ... cell_volume_fraction.hpp
 //   coordination, walls, rattlers, max overlap ......... contact_stats.hpp (paper 000 Eq. 15)
 //   partial coordination z(xi) ......................... partial_coordination.hpp (paper 000 Sect. 3.2)
 //   fabric tensors ..................................... fabric.hpp (paper 000 Eq. 17, paper 002 Eq. 1)
@@ -23,6 +24,7 @@
 #include "core/geometry/packing.hpp"
 #include "core/metrics/contact_normals.hpp"
 #include "core/metrics/contact_stats.hpp"
+#include "core/metrics/cell_volume_fraction.hpp"
 #include "core/metrics/container_volume_fraction.hpp"
 #include "core/metrics/fabric.hpp"
 #include "core/metrics/homogeneity.hpp"
@@ -67,6 +69,7 @@ struct PackingAnalysis {
   std::vector<std::pair<double, double>> vf_curve;  ///< (r_ref, VF) at equispaced r_ref in [r_max, a]
   RegionVolumeFraction vf_container;     ///< whole container
   RegionVolumeFraction vf_core;          ///< container shrunk by 2 r_max
+  CellVolumeFraction vf_cells;           ///< cells of 8 mean diameters (fewer if too few fit), 2 r_max inside
 
   // Contacts.
   ContactStats coordination;             ///< z, z with walls, histogram, rattlers, max overlap (all pairs)
