@@ -1,6 +1,7 @@
 #include "cli/sphere_pack.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "cli/scene_regions.hpp"
+#include "core/metrics/contacts.hpp"
 #include "core/metrics/packing_analysis.hpp"
 #include "core/metrics/validate.hpp"
 #include "core/sampling/split_radius.hpp"
@@ -53,11 +55,43 @@ void fill(const Scene& scene, const DensifyOptions& options, SphereRun<D>& run, 
 template <int D>
 void fill_scene_voids(const Scene& scene, SphereRun<D>& run) {
   DensifyOptions o = scene.densify.value_or(DensifyOptions{});
+  if (!o.target_volume_fraction) o.target_volume_fraction = scene.target_solid_fraction;
   if (!o.split) return fill<D>(scene, o, run, *scene.radii);
   const SplitRadius below(scene.radii, *o.split, SplitRadius::Side::Below);
   const auto whole = static_cast<std::uint64_t>(std::ceil(static_cast<double>(run.packing.size()) / (1 - below.share_below())));
   o.max_particles = o.max_particles ? std::min(*o.max_particles, whole) : whole;
   fill<D>(scene, o, run, below);
+}
+
+/// The scene's `target:`: a packing above it thinned down to it (densify/thinning.hpp), the
+/// contacts found as the check finds them (the run's tolerance), the order drawn from the seed.
+/// Nothing to do without a target or below it (the check says it was not reached).
+template <int D>
+void thin_to_target(const Scene& scene, SphereRun<D>& run) {
+  const Container<D>& container = *scene.container<D>();
+  if (!scene.target_solid_fraction || !(run.solid_measure > *scene.target_solid_fraction * container.measure())) return;
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::size_t n = run.packing.size();
+  std::vector<double> measure(n);
+  for (std::size_t i = 0; i < n; ++i) measure[i] = ball_measure<D>(run.packing.radii[i]);
+  std::vector<ThinningContact> contacts;
+  for (const PairContact& c : find_pair_contacts(run.packing, run.contact_tolerance)) contacts.push_back({c.i, c.j});
+  std::vector<std::uint32_t> walls(n, 0);
+  for (const WallContact& w : find_wall_contacts(run.packing, container, run.contact_tolerance)) ++walls[w.i];
+  Rng rng(scene.seed ^ 0x7417'7417'7417'7417ull);  // a stream of its own: the packer's draws are unchanged
+  ThinningReport report;
+  const std::vector<char> keep = thin_to_measure({measure, run.packing.radii, contacts, walls},
+                                                 *scene.target_solid_fraction * container.measure(), D, rng, report);
+  Packing<D> kept;
+  kept.origin = run.packing.origin;
+  kept.reserve(n - report.removed);
+  for (std::size_t i = 0; i < n; ++i)
+    if (keep[i]) kept.add(run.packing.centers[i], run.packing.radii[i]);
+  run.packing = std::move(kept);
+  run.solid_measure = solid_of(run.packing);
+  run.thinned = report;
+  run.thinning_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  run.seconds += run.thinning_seconds;
 }
 
 /// Paper 000: steps 2-7a on the scene's tetrahedral mesh, then step 7b, the void filling with the
@@ -71,7 +105,8 @@ void fill_tet_mesh(const Scene& scene, SphereRun<3>& run) {
   o.overlap = t.overlap;
   o.z_min = t.z_min;
   o.loose = t.loose;
-  o.target_volume_fraction = scene.stop.target_volume_fraction;
+  o.target_volume_fraction = scene.stop.target_volume_fraction ? scene.stop.target_volume_fraction
+                                                                : scene.target_solid_fraction;
   o.max_particles = scene.stop.max_particles;
   std::optional<SceneRegions> regions;
   if (!scene.regions.empty()) {
@@ -89,7 +124,8 @@ void fill_tet_mesh(const Scene& scene, SphereRun<3>& run) {
   step_7b.fallback_r_min = t.fallback_r_min;
   step_7b.target_volume_fraction = o.target_volume_fraction;
   step_7b.max_particles = o.max_particles;
-  const DensifyOptions base = scene.densify.value_or(step_7b);
+  DensifyOptions base = scene.densify.value_or(step_7b);
+  if (!base.target_volume_fraction) base.target_volume_fraction = o.target_volume_fraction;
   if (!regions) {
     fill<3>(scene, base, run, *scene.radii);
   } else {
@@ -135,6 +171,7 @@ typename SpherePack<D>::Result SpherePack<D>::pack(const Scene& scene, const Pro
   if constexpr (D == 3) {
     if (scene.packer.method == "tet_mesh") {
       fill_tet_mesh(scene, run);
+      thin_to_target<3>(scene, run);
       return run;
     }
   }
@@ -147,6 +184,7 @@ typename SpherePack<D>::Result SpherePack<D>::pack(const Scene& scene, const Pro
   }
   const bool root = !exchange || exchange->process() == 0;  // the others hold no packing
   if (scene.densify && root) fill_scene_voids<D>(scene, run);
+  if (root) thin_to_target<D>(scene, run);
   return run;
 }
 
@@ -157,6 +195,7 @@ typename SpherePack<D>::Result SpherePack<D>::densify(const Scene& scene, Packin
   run.packing = std::move(packing);
   run.contact_tolerance = scene.packer.contact_tolerance;
   fill_scene_voids<D>(scene, run);
+  thin_to_target<D>(scene, run);
   return run;
 }
 
@@ -165,6 +204,7 @@ std::string SpherePack<D>::stop_text(const Result& run) {
   std::string s = run.given ? "given" : run.tet_filled ? (run.tet_filled->reached_target ? to_string(run.stop) : "mesh filled")
                                                        : to_string(run.stop);
   if (run.densified) s += std::string("; void filling: ") + to_string(run.densified->stop);
+  if (run.thinned) s += "; thinned to the target";
   return s;
 }
 
@@ -190,12 +230,32 @@ PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth
   // A target solid fraction above what the packer reached is said, with why it stopped.
   std::optional<double> phi0 = scene.stop.target_volume_fraction;
   if (res.densified && scene.densify && scene.densify->target_volume_fraction) phi0 = scene.densify->target_volume_fraction;
-  if (phi0 && scene.regions.empty() && res.solid_measure / container.measure() < *phi0) {
+  if (scene.target_solid_fraction) phi0 = scene.target_solid_fraction;
+  if (phi0 && !res.thinned && scene.regions.empty() && res.solid_measure / container.measure() < *phi0) {
     char line[200];
     std::snprintf(line, sizeof line, "  target         volume fraction %.4g not reached: %.4f (stop: %s)\n", *phi0,
                   res.solid_measure / container.measure(), stop_text(res).c_str());
     c.summary_lines += line;
     c.info.emplace_back("target_volume_fraction", "not reached");
+  }
+  if (const auto& t = res.thinned) {
+    const double measure = container.measure();
+    char line[400];
+    std::snprintf(line, sizeof line,
+                  "  target         solid fraction %.4g (porosity %.4g, void ratio %.4g): %.4f of the container; thinned "
+                  "from %.4f, %llu of %llu removed across the container, every one left kept min(%d, its contacts) "
+                  "(%llu lost all); %.3f s\n",
+                  *scene.target_solid_fraction, 1 - *scene.target_solid_fraction, 1 / *scene.target_solid_fraction - 1,
+                  t->measure_after / measure, t->measure_before / measure, static_cast<unsigned long long>(t->removed),
+                  static_cast<unsigned long long>(t->before), t->level,
+                  static_cast<unsigned long long>(t->lost_every_contact), res.thinning_seconds);
+    c.summary_lines += line;
+    c.metrics.insert(c.metrics.end(), {{"target_solid_fraction", *scene.target_solid_fraction},
+                                       {"thinning_volume_fraction_before", t->measure_before / measure},
+                                       {"thinning_seconds", res.thinning_seconds}});
+    c.counters.insert(c.counters.end(), {{"thinning_removed", t->removed},
+                                         {"thinning_contact_level", static_cast<std::uint64_t>(t->level)},
+                                         {"thinning_lost_every_contact", t->lost_every_contact}});
   }
   if constexpr (D == 3) {
     if (!scene.regions.empty()) add_region_lines(SceneRegions(scene), res.packing, c);

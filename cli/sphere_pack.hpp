@@ -1,7 +1,7 @@
 #pragma once
 // `frontpack pack` for a scene of spheres (disks): the advancing front over centres and radii (or
 // paper 000's fill of a tetrahedral mesh, whose step 7b is the void filling), the void filling
-// the scene may ask for (`densify:`), then every figure of `frontpack analyze`
+// the scene may ask for (`densify:`), the thinning to its `target:`, then every figure of `frontpack analyze`
 // (the independent validation included). `frontpack densify` runs the same stage on a packing
 // read from a file.
 #include <optional>
@@ -9,6 +9,7 @@
 
 #include "cli/pack_check.hpp"
 #include "core/io/scene.hpp"
+#include "densify/thinning.hpp"
 #include "densify/void_filling.hpp"
 #include "fill/tet_mesh_fill.hpp"
 #include "front/pack_result.hpp"
@@ -24,6 +25,8 @@ struct SphereRun : PackResult<D> {
   bool given = false;                            ///< read from a file, not packed
   std::optional<TetFillReport> tet_filled;       ///< packed by the tetrahedral-mesh fill (steps 2-7a)
   std::optional<VoidFillingReport> densified;    ///< the void filling, when the scene asks for it
+  std::optional<ThinningReport> thinned;         ///< brought down to the scene's `target:`
+  double thinning_seconds = 0.0;
 };
 
 template <int D>

@@ -222,6 +222,11 @@ struct Scene {
   PackerOptions packer;
   StopCriteria stop;
   std::optional<DensifyOptions> densify;  ///< void filling after the packer (spheres only)
+  /// `target:` the solid fraction the whole container is to have (given as solid_fraction,
+  /// porosity n = 1 - phi or void ratio e = 1 / phi - 1): the packer packs to its own density,
+  /// then particles spread over the whole container are removed down to it (densify/thinning.hpp);
+  /// a fill with a phi0 of its own (tet_mesh, the void filling) stops at it.
+  std::optional<double> target_solid_fraction;
   std::vector<RegionSpec> regions;        ///< method tet_mesh: physical volumes with laws of their own
   std::vector<OutputSpec> outputs;
   /// Every file the scene was read from (itself, a mesh): no output may replace them.

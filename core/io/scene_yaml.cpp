@@ -727,6 +727,20 @@ void parse_stop(const Value& v, StopCriteria& s, std::map<std::string, SourceSpo
   if (auto x = m.find("time")) s.time_limit_seconds = x->positive();
 }
 
+/// `target: {solid_fraction: PHI | porosity: N | void_ratio: E}`: exactly one, as a solid fraction.
+double parse_target(const Value& v) {
+  const Map m = v.map();
+  m.check_known({"solid_fraction", "porosity", "void_ratio"});
+  const auto phi = m.find("solid_fraction"), n = m.find("porosity"), e = m.find("void_ratio");
+  if ((phi ? 1 : 0) + (n ? 1 : 0) + (e ? 1 : 0) != 1)
+    v.fail("give exactly one of solid_fraction (phi), porosity (n = 1 - phi) or void_ratio (e = 1/phi - 1)");
+  if (phi) return solid_fraction(*phi);
+  if (n) return 1 - solid_fraction(*n);
+  const double ratio = e->number();
+  if (!(ratio > 0 && std::isfinite(ratio))) e->fail("must be a positive number (got " + e->node().Scalar() + ")");
+  return 1 / (1 + ratio);
+}
+
 void parse_densify(const Value& v, int dimension, bool shapes, const RadiusDistributionPtr& law, DensifyOptions& d) {
   if (shapes) v.fail("void filling adds spheres: it needs a scene of spheres (disks), not of shapes");
   if (v.node().IsNull()) return;  // `densify:` alone: every default
@@ -1103,7 +1117,8 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
   ctx.tet_mesh = &scene.tet_mesh;
   try {
     const Map root(ctx, doc, "", doc.Mark().is_null() ? start : doc.Mark());
-    root.check_known({"dimension", "seed", "container", "particles", "packer", "stop", "densify", "regions", "output"});
+    root.check_known(
+        {"dimension", "seed", "container", "particles", "packer", "stop", "target", "densify", "regions", "output"});
     const Value dim = root.get("dimension", "2 or 3");
     const std::uint64_t d = dim.unsigned_integer();
     if (d != 2 && d != 3) dim.fail("must be 2 or 3 (got " + dim.node().Scalar() + ")");
@@ -1115,6 +1130,15 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
     if (auto d = root.find("densify"))
       parse_densify(*d, scene.dimension, !scene.particle_templates.empty(), scene.radii, scene.densify.emplace());
     if (auto r = root.find("regions")) parse_regions(*r, scene);
+    if (auto t = root.find("target")) {
+      if (scene.stop.target_volume_fraction)
+        t->fail("give one of 'target' (the whole container at that solid fraction) and 'stop.volume_fraction' (growth "
+                "stopped there: a dense part and an empty one)");
+      if (scene.densify && scene.densify->target_volume_fraction)
+        t->fail("the void filling stops at the target: drop 'densify.volume_fraction'");
+      scene.target_solid_fraction = parse_target(*t);
+      scene.spots["target"] = t->spot();
+    }
     if (auto o = root.find("output")) scene.outputs = parse_outputs(*o);
   } catch (const YAML::Exception& e) {  // not expected: every access is checked first
     ctx.fail(e.mark, "", e.msg);

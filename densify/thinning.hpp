@@ -1,0 +1,59 @@
+#pragma once
+// Thinning: a packing brought down to a target solid fraction, the same everywhere (issue 13,
+// `target:`). A packer that stops growing at phi0 leaves a dense part and an empty one (the
+// valera-cube at 0.45: slabs from 0.29 at the walls to 0.56 in the middle); packing to the
+// packer's own density and then removing particles spread over the whole container gives every
+// part the target. What is removed is chosen so that:
+//  * the size law is kept: the particles are split into classes of equal count by size and no
+//    class loses more than its share (the fraction of the solid to remove, by count, rounded);
+//    as the shares add up to the removal, every class ends within a few particles of its share
+//    (what is left after every class has its share goes freely, by the levels again),
+//    so the proportions stay those of the packing, and within a class the particles go at random
+//    (measured: the radii test's p stays at the packing's; experiments/target-fraction);
+//  * the contacts are kept where they can be: a removal must leave every neighbour with at least
+//    min(level, the contacts it had) contacts (walls count), at level = D first, then D - 1 ..
+//    1, then 0 (any particle; reached only when no removal keeps every neighbour touched);
+//  * the place is random: candidates come in one random order (seeded), so no region is
+//    preferred beyond what the contact rule prefers (measured by the per-cell solid fraction,
+//    core/metrics/cell_volume_fraction.hpp);
+//  * the target is met as closely as a particle allows: a removal is made only while the solid
+//    left stays at least half the particle above the target, so it ends within half the
+//    largest particle's measure of it.
+// Removal never creates an overlap or moves a particle: validity is the packing's own.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/sampling/rng.hpp"
+
+namespace fp {
+
+struct ThinningContact {
+  std::uint32_t i, j;
+};
+
+struct ThinningReport {
+  std::uint64_t before = 0, removed = 0;
+  double measure_before = 0.0, measure_after = 0.0;
+  /// The contact level of the last removal: every particle left kept at least min(level, its
+  /// contacts before) contacts. dimension (nothing needed relaxing) .. 0.
+  int level = 0;
+  /// Particles that had a contact before and have none after (rattlers made by the thinning).
+  std::uint64_t lost_every_contact = 0;
+  bool reached = false;  ///< the target is within half a particle (false: even removing freely missed it)
+};
+
+struct ThinningInput {
+  std::span<const double> measure;          ///< each particle's volume (area)
+  std::span<const double> size;             ///< each particle's size (radius), for the classes
+  std::span<const ThinningContact> contacts;  ///< particle pairs in contact
+  std::span<const std::uint32_t> wall_contacts;  ///< per particle: contacts with the container
+};
+
+/// Which particles to keep (1) so that the kept measure comes to `target_measure`; the report in
+/// `report`. `dimension` (2, 3) sets the first contact level; `classes` the size classes (at
+/// most one per 50 particles). Deterministic for a given rng state.
+std::vector<char> thin_to_measure(const ThinningInput& input, double target_measure, int dimension, Rng& rng,
+                                  ThinningReport& report, int classes = 16);
+
+}  // namespace fp
