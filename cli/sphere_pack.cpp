@@ -78,9 +78,14 @@ void thin_to_target(const Scene& scene, SphereRun<D>& run) {
   for (const PairContact& c : find_pair_contacts(run.packing, run.contact_tolerance)) contacts.push_back({c.i, c.j});
   std::vector<std::uint32_t> walls(n, 0);
   for (const WallContact& w : find_wall_contacts(run.packing, container, run.contact_tolerance)) ++walls[w.i];
+  // The walk: a Morton curve over cells of a mean diameter (densify/thinning.hpp).
+  double mean_r = 0;
+  for (const double r : run.packing.radii) mean_r += r / static_cast<double>(n);
+  std::vector<std::uint64_t> place(n);
+  for (std::size_t i = 0; i < n; ++i) place[i] = morton_key<D>(run.packing.centers[i], container.bounds().lo, 2 * mean_r);
   Rng rng(scene.seed ^ 0x7417'7417'7417'7417ull);  // a stream of its own: the packer's draws are unchanged
   ThinningReport report;
-  const std::vector<char> keep = thin_to_measure({measure, run.packing.radii, contacts, walls},
+  const std::vector<char> keep = thin_to_measure({measure, run.packing.radii, contacts, walls, place},
                                                  *scene.target_solid_fraction * container.measure(), D, rng, report);
   Packing<D> kept;
   kept.origin = run.packing.origin;

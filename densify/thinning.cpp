@@ -10,8 +10,8 @@ namespace fp {
 std::vector<char> thin_to_measure(const ThinningInput& in, double target_measure, int dimension, Rng& rng,
                                   ThinningReport& report, int classes) {
   const std::size_t n = in.measure.size();
-  if (in.size.size() != n || in.wall_contacts.size() != n)
-    throw std::invalid_argument("thin_to_measure: measure, size and wall_contacts differ in length");
+  if (in.size.size() != n || in.wall_contacts.size() != n || (!in.place.empty() && in.place.size() != n))
+    throw std::invalid_argument("thin_to_measure: measure, size, wall_contacts and place differ in length");
   if (!(target_measure >= 0.0) || !std::isfinite(target_measure))
     throw std::invalid_argument("thin_to_measure: the target must be a finite measure >= 0");
   report = {};
@@ -33,27 +33,26 @@ std::vector<char> thin_to_measure(const ThinningInput& in, double target_measure
   std::vector<std::uint32_t> z0(n), z(n);
   for (std::size_t i = 0; i < n; ++i) z0[i] = z[i] = start[i + 1] - start[i] + in.wall_contacts[i];
 
-  // Size classes of equal count; each may lose its share of the removal, by count.
+  // Size classes of equal count, each owing its share of its own measure.
   const double share = solid > 0.0 ? std::max(0.0, 1.0 - target_measure / solid) : 0.0;
   const std::size_t k = std::clamp<std::size_t>(n / 50, 1, static_cast<std::size_t>(std::max(classes, 1)));
   std::vector<std::uint32_t> by_size(n), cls(n);
   std::iota(by_size.begin(), by_size.end(), 0u);
   std::stable_sort(by_size.begin(), by_size.end(), [&](std::uint32_t a, std::uint32_t b) { return in.size[a] < in.size[b]; });
-  std::vector<std::uint64_t> cap(k, 0), taken(k, 0);
   for (std::size_t q = 0; q < n; ++q) cls[by_size[q]] = static_cast<std::uint32_t>(q * k / n);
-  for (std::size_t c = 0; c < k; ++c) {
-    const std::size_t count = (c + 1) * n / k - c * n / k;
-    cap[c] = static_cast<std::uint64_t>(std::floor(share * static_cast<double>(count) + 0.5));
-  }
+  std::vector<double> owed(k, 0.0), alive(k, 0.0);
+  for (std::size_t i = 0; i < n; ++i) alive[cls[i]] += in.measure[i];
+  for (std::size_t c = 0; c < k; ++c) owed[c] = share * alive[c];
 
-  // One random order for every pass.
+  // The walk: along `place` (nearby particles nearby in it), ties and everything else in a
+  // random order.
   std::vector<std::uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
   for (std::size_t q = n; q > 1; --q) std::swap(order[q - 1], order[rng.below(q)]);
+  if (!in.place.empty())
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return in.place[a] < in.place[b]; });
 
-  auto done = [&] { return solid <= target_measure; };
-  auto removable = [&](std::uint32_t i, int level, bool capped) {
-    if (!keep[i] || (capped && taken[cls[i]] >= cap[cls[i]])) return false;
+  auto removable = [&](std::uint32_t i, int level) {
     if (solid - in.measure[i] / 2 < target_measure) return false;  // would end farther from the target
     for (std::uint32_t e = start[i]; e < start[i + 1]; ++e) {
       const std::uint32_t j = nb[e];
@@ -64,28 +63,54 @@ std::vector<char> thin_to_measure(const ThinningInput& in, double target_measure
   auto remove = [&](std::uint32_t i) {
     keep[i] = 0;
     solid -= in.measure[i];
-    ++taken[cls[i]];
+    alive[cls[i]] -= in.measure[i];
+    owed[cls[i]] -= in.measure[i];
     ++report.removed;
     for (std::uint32_t e = start[i]; e < start[i + 1]; ++e) --z[nb[e]];
   };
-  // Levels D .. 0 with the class caps, then free of them; each pass until nothing more goes.
-  for (const bool capped : {true, false}) {
-    for (int level = dimension; level >= 0 && !done(); --level) {
-      bool any = true;
-      while (any && !done()) {
-        any = false;
-        for (const std::uint32_t i : order) {
-          if (done()) break;
-          if (removable(i, level, capped)) {
-            remove(i);
-            report.level = level;
-            any = true;
-          }
-        }
+  auto done = [&] { return solid <= target_measure; };
+  // One pass: error diffusion along the walk. What the classes still owe is spread over the
+  // particles left in proportion to their measure (the rate); a particle goes when the debt run
+  // up reaches half of it, its class still owes half of it and the contact rule allows; a debt
+  // not paid where it came due is paid by the next particles of the walk (nearby), so the
+  // removal is even at every scale above a few particles. One debt for every class: per class it
+  // would come due once per class's turn, a few dozen particles apart. At level 0 the contact
+  // rule is gone and every class can pay its share, to half a particle.
+  auto pass = [&](int level) {
+    double owed_all = 0.0, alive_all = 0.0;
+    for (std::size_t c = 0; c < k; ++c) owed_all += std::max(0.0, owed[c]), alive_all += alive[c];
+    const double rate = alive_all > 0.0 ? owed_all / alive_all : 0.0;
+    double debt = 0.0;
+    bool any = false;
+    for (const std::uint32_t i : order) {
+      if (!keep[i]) continue;
+      const double m = in.measure[i];
+      debt += rate * m;
+      if (debt >= m / 2 && owed[cls[i]] >= m / 2 && removable(i, level)) {
+        debt -= m;
+        remove(i);
+        report.level = std::min(report.level, level);
+        any = true;
+        if (done()) break;
       }
     }
-    if (done()) break;
+    return any;
+  };
+  for (int level = dimension; level >= 0 && !done(); --level)
+    for (int round = 0; round < 8 && !done() && pass(level); ++round) {
+    }
+  // What rounding left: along the walk, any particle whose removal brings the solid closer, at
+  // the highest contact level it keeps.
+  for (const std::uint32_t i : order) {
+    if (!keep[i] || done()) continue;
+    for (int level = dimension; level >= 0; --level)
+      if (removable(i, level)) {
+        remove(i);
+        report.level = std::min(report.level, level);
+        break;
+      }
   }
+
   // Within half a particle: no particle's removal brings the solid closer to the target.
   report.reached = true;
   for (std::size_t i = 0; i < n && report.reached; ++i)
