@@ -1,5 +1,6 @@
 #include "cli/shape_pack.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -38,7 +39,42 @@ typename ShapePack<D>::Result ShapePack<D>::pack(const Scene& scene, const Progr
   if (exchange && exchange->processes() > 1)
     throw std::runtime_error("several MPI processes pack scenes of spheres (disks) only; run this scene without mpirun, with "
                              "threads (-j N)");
-  return pack_shape_scene<D>(scene, progress);
+  Result run;
+  static_cast<ShapePackResult<D>&>(run) = pack_shape_scene<D>(scene, progress);
+  if (!above_target<D>(scene, run.solid_measure)) return run;
+  // The contacts as the validation finds them (narrow phase); the size classes by template,
+  // then size (a rank), so each template keeps its share too.
+  const Container<D>& container = *scene.container<D>();
+  ContactNetwork<D> network;
+  validate_shapes<D>(run.packing, container, run.contact_tolerance, {}, kRadiiAlpha, &network);
+  const std::size_t n = run.packing.size();
+  std::vector<double> measure(n), rank(n);
+  std::vector<Vec<D>> centres(n);
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    measure[i] = run.packing.particles[i].shape->measure();
+    centres[i] = run.packing.particles[i].position();
+    order[i] = i;
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const Particle<D>&pa = run.packing.particles[a], &pb = run.packing.particles[b];
+    return pa.template_id != pb.template_id ? pa.template_id < pb.template_id : pa.size < pb.size;
+  });
+  for (std::size_t q = 0; q < n; ++q) rank[order[q]] = static_cast<double>(q);
+  const std::vector<char> keep = particles_to_keep<D>(scene, container, measure, rank, centres, run.solid_measure,
+                                                      network.pairs, network.walls, run.thinned);
+  ShapePacking<D> kept;
+  kept.template_names = run.packing.template_names;
+  kept.origin = run.packing.origin;
+  run.solid_measure = 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (keep[i]) {
+      kept.particles.push_back(run.packing.particles[i]);
+      run.solid_measure += measure[i];
+    }
+  run.packing = std::move(kept);
+  run.seconds += run.thinned->seconds;
+  return run;
 }
 
 template <int D>
@@ -66,6 +102,7 @@ PackCheck ShapePack<D>::check(const Scene& scene, const Result& res, CheckDepth 
                 scene.packer.minimisation.algorithm.c_str(), static_cast<unsigned long long>(s.minimisations),
                 static_cast<unsigned long long>(s.gap_evaluations), static_cast<unsigned long long>(s.fcl_queries));
   c.summary_lines += buf;
+  add_target_lines(c, scene, res.thinned, res.solid_measure, container.measure(), stop_text(res));
   return c;
 }
 

@@ -1,7 +1,6 @@
 #include "cli/sphere_pack.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -9,6 +8,7 @@
 #include <vector>
 
 #include "cli/scene_regions.hpp"
+#include "cli/target_thinning.hpp"
 #include "core/metrics/contacts.hpp"
 #include "core/metrics/packing_analysis.hpp"
 #include "core/metrics/validate.hpp"
@@ -63,40 +63,26 @@ void fill_scene_voids(const Scene& scene, SphereRun<D>& run) {
   fill<D>(scene, o, run, below);
 }
 
-/// The scene's `target:`: a packing above it thinned down to it (densify/thinning.hpp), the
-/// contacts found as the check finds them (the run's tolerance), the order drawn from the seed.
-/// Nothing to do without a target or below it (the check says it was not reached).
+/// The scene's `target:` (cli/target_thinning.hpp), contacts found at the run's tolerance.
 template <int D>
 void thin_to_target(const Scene& scene, SphereRun<D>& run) {
+  if (!above_target<D>(scene, run.solid_measure)) return;
   const Container<D>& container = *scene.container<D>();
-  if (!scene.target_solid_fraction || !(run.solid_measure > *scene.target_solid_fraction * container.measure())) return;
-  const auto t0 = std::chrono::steady_clock::now();
   const std::size_t n = run.packing.size();
   std::vector<double> measure(n);
   for (std::size_t i = 0; i < n; ++i) measure[i] = ball_measure<D>(run.packing.radii[i]);
-  std::vector<ThinningContact> contacts;
-  for (const PairContact& c : find_pair_contacts(run.packing, run.contact_tolerance)) contacts.push_back({c.i, c.j});
-  std::vector<std::uint32_t> walls(n, 0);
-  for (const WallContact& w : find_wall_contacts(run.packing, container, run.contact_tolerance)) ++walls[w.i];
-  // The walk: a Morton curve over cells of a mean diameter (densify/thinning.hpp).
-  double mean_r = 0;
-  for (const double r : run.packing.radii) mean_r += r / static_cast<double>(n);
-  std::vector<std::uint64_t> place(n);
-  for (std::size_t i = 0; i < n; ++i) place[i] = morton_key<D>(run.packing.centers[i], container.bounds().lo, 2 * mean_r);
-  Rng rng(scene.seed ^ 0x7417'7417'7417'7417ull);  // a stream of its own: the packer's draws are unchanged
-  ThinningReport report;
-  const std::vector<char> keep = thin_to_measure({measure, run.packing.radii, contacts, walls, place},
-                                                 *scene.target_solid_fraction * container.measure(), D, rng, report);
+  const std::vector<char> keep =
+      particles_to_keep<D>(scene, container, measure, run.packing.radii, run.packing.centers, run.solid_measure,
+                           find_pair_contacts(run.packing, run.contact_tolerance),
+                           find_wall_contacts(run.packing, container, run.contact_tolerance), run.thinned);
   Packing<D> kept;
   kept.origin = run.packing.origin;
-  kept.reserve(n - report.removed);
+  kept.reserve(n - run.thinned->report.removed);
   for (std::size_t i = 0; i < n; ++i)
     if (keep[i]) kept.add(run.packing.centers[i], run.packing.radii[i]);
   run.packing = std::move(kept);
   run.solid_measure = solid_of(run.packing);
-  run.thinned = report;
-  run.thinning_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  run.seconds += run.thinning_seconds;
+  run.seconds += run.thinned->seconds;
 }
 
 /// Paper 000: steps 2-7a on the scene's tetrahedral mesh, then step 7b, the void filling with the
@@ -235,33 +221,14 @@ PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth
   // A target solid fraction above what the packer reached is said, with why it stopped.
   std::optional<double> phi0 = scene.stop.target_volume_fraction;
   if (res.densified && scene.densify && scene.densify->target_volume_fraction) phi0 = scene.densify->target_volume_fraction;
-  if (scene.target_solid_fraction) phi0 = scene.target_solid_fraction;
-  if (phi0 && !res.thinned && scene.regions.empty() && res.solid_measure / container.measure() < *phi0) {
+  if (phi0 && !scene.target_solid_fraction && scene.regions.empty() && res.solid_measure / container.measure() < *phi0) {
     char line[200];
     std::snprintf(line, sizeof line, "  target         volume fraction %.4g not reached: %.4f (stop: %s)\n", *phi0,
                   res.solid_measure / container.measure(), stop_text(res).c_str());
     c.summary_lines += line;
     c.info.emplace_back("target_volume_fraction", "not reached");
   }
-  if (const auto& t = res.thinned) {
-    const double measure = container.measure();
-    char line[400];
-    std::snprintf(line, sizeof line,
-                  "  target         solid fraction %.4g (porosity %.4g, void ratio %.4g): %.4f of the container; thinned "
-                  "from %.4f, %llu of %llu removed across the container, every one left kept min(%d, its contacts) "
-                  "(%llu lost all); %.3f s\n",
-                  *scene.target_solid_fraction, 1 - *scene.target_solid_fraction, 1 / *scene.target_solid_fraction - 1,
-                  t->measure_after / measure, t->measure_before / measure, static_cast<unsigned long long>(t->removed),
-                  static_cast<unsigned long long>(t->before), t->level,
-                  static_cast<unsigned long long>(t->lost_every_contact), res.thinning_seconds);
-    c.summary_lines += line;
-    c.metrics.insert(c.metrics.end(), {{"target_solid_fraction", *scene.target_solid_fraction},
-                                       {"thinning_volume_fraction_before", t->measure_before / measure},
-                                       {"thinning_seconds", res.thinning_seconds}});
-    c.counters.insert(c.counters.end(), {{"thinning_removed", t->removed},
-                                         {"thinning_contact_level", static_cast<std::uint64_t>(t->level)},
-                                         {"thinning_lost_every_contact", t->lost_every_contact}});
-  }
+  add_target_lines(c, scene, res.thinned, res.solid_measure, container.measure(), stop_text(res));
   if constexpr (D == 3) {
     if (!scene.regions.empty()) add_region_lines(SceneRegions(scene), res.packing, c);
   }

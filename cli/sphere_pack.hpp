@@ -8,8 +8,8 @@
 #include <string>
 
 #include "cli/pack_check.hpp"
+#include "cli/target_thinning.hpp"
 #include "core/io/scene.hpp"
-#include "densify/thinning.hpp"
 #include "densify/void_filling.hpp"
 #include "fill/tet_mesh_fill.hpp"
 #include "front/pack_result.hpp"
@@ -25,8 +25,7 @@ struct SphereRun : PackResult<D> {
   bool given = false;                            ///< read from a file, not packed
   std::optional<TetFillReport> tet_filled;       ///< packed by the tetrahedral-mesh fill (steps 2-7a)
   std::optional<VoidFillingReport> densified;    ///< the void filling, when the scene asks for it
-  std::optional<ThinningReport> thinned;         ///< brought down to the scene's `target:`
-  double thinning_seconds = 0.0;
+  std::optional<TargetThinning> thinned;         ///< brought down to the scene's `target:`
 };
 
 template <int D>

@@ -102,6 +102,27 @@ TEST(CliTarget, DisksAndACylinder) {
   }
 }
 
+TEST(CliTarget, ShapesToo) {
+  // Hexagons and triangles (two templates): thinned by their own contacts (the narrow phase),
+  // each template's share and sizes kept (the validation's size tests), the output valid.
+  TempDir dir;
+  write_bytes(dir.work() / "poly.yaml",
+              "dimension: 2\nseed: 1\ncontainer: {type: rectangle, min: [0, 0], max: [40, 40]}\nparticles:\n"
+              "  - {shape: polygon, sides: 6, size: {distribution: uniform, min: 0.5, max: 1}, fraction: 3}\n"
+              "  - {shape: polygon, vertices: [[0, 0], [2, 0], [0, 1]], size: {distribution: uniform, min: 0.5, max: 1}, fraction: 1}\n"
+              "target: {solid_fraction: 0.45}\n");
+  const RunResult r = run_frontpack(dir, "pack poly.yaml -o poly.json --record rec.json");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("thinned to the target"), std::string::npos) << r.out;
+  EXPECT_NEAR(metric(read_bytes(dir.work() / "rec.json"), "volume_fraction_container"), 0.45, 0.005);
+  EXPECT_EQ(run_frontpack(dir, "validate poly.json --scene poly.yaml").exit_code, 0);
+  ASSERT_EQ(run_frontpack(dir, "pack poly.yaml -o again.json -q").exit_code, 0);
+  // The same particles (the file's record holds timings, which differ).
+  const std::string a = read_bytes(dir.work() / "again.json"), b = read_bytes(dir.work() / "poly.json");
+  ASSERT_NE(b.find("\"particles\": ["), std::string::npos);
+  EXPECT_EQ(a.substr(a.find("\"particles\": [")), b.substr(b.find("\"particles\": [")));
+}
+
 TEST(CliTarget, AboveWhatThePackerReachesIsSaid) {
   TempDir dir;
   write_bytes(dir.work() / "high.yaml", box_scene("target: {solid_fraction: 0.8}\n", 0.0, 0.3));
