@@ -19,12 +19,12 @@ std::vector<char> particles_to_keep(const Scene& scene, const Container<D>& cont
   for (const PairContact& c : pairs) contacts.push_back({c.i, c.j});
   std::vector<std::uint32_t> wall_count(n, 0);
   for (const WallContact& w : walls) ++wall_count[w.i];
-  // The walk: a Morton curve over cells of about a particle (the mean measure's ball diameter).
+  // The walk: a Hilbert curve over cells of about a particle (the mean measure's ball diameter).
   double mean = 0;
   for (const double m : measure) mean += m / static_cast<double>(n);
   const double cell = 2 * std::pow(mean / ball_measure<D>(1.0), 1.0 / D);
   std::vector<std::uint64_t> place(n);
-  for (std::size_t i = 0; i < n; ++i) place[i] = morton_key<D>(centres[i], container.bounds().lo, cell);
+  for (std::size_t i = 0; i < n; ++i) place[i] = hilbert_key<D>(centres[i], container.bounds().lo, cell);
   Rng rng(scene.seed ^ 0x7417'7417'7417'7417ull);  // a stream of its own: the packer's draws are unchanged
   TargetThinning t;
   std::vector<char> keep = thin_to_measure({measure, size, contacts, wall_count, place},

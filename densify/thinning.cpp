@@ -70,28 +70,44 @@ std::vector<char> thin_to_measure(const ThinningInput& in, double target_measure
   };
   auto done = [&] { return solid <= target_measure; };
   // One pass: error diffusion along the walk. What the classes still owe is spread over the
-  // particles left in proportion to their measure (the rate); a particle goes when the debt run
-  // up reaches half of it, its class still owes half of it and the contact rule allows; a debt
-  // not paid where it came due is paid by the next particles of the walk (nearby), so the
-  // removal is even at every scale above a few particles. One debt for every class: per class it
-  // would come due once per class's turn, a few dozen particles apart. At level 0 the contact
-  // rule is gone and every class can pay its share, to half a particle.
+  // particles left in proportion to their measure (the rate), one debt for all. Where the walk
+  // is, the particles of the next kWindow places (a few diameters) are the candidates: the one of
+  // the class furthest behind its share that the contact rule lets go is chosen, and goes once
+  // the debt reaches half of it (until then the walk goes on and the debt grows). So the removal
+  // is even by measure along the curve, hence in space, and the classes keep pace with each
+  // other everywhere: a wide law's few large particles go one by one, evenly (per-class debts
+  // made 16 streams whose noise added up; one debt taking whatever was due, small ones mostly,
+  // left the large ones to go later in clumps: cells of 4 diameters ranged 0.23 .. 0.62 at 0.40).
+  // The window: 16 places (4 and 64 measured worse at R = 7: cells of 8 diameters sd 0.048 and
+  // 0.022 against 0.017).
+  std::vector<double> owed_at_start(owed);
+  auto behind = [&](std::uint32_t c) { return owed_at_start[c] > 0.0 ? owed[c] / owed_at_start[c] : 0.0; };
+  constexpr std::size_t kWindow = 16;
   auto pass = [&](int level) {
     double owed_all = 0.0, alive_all = 0.0;
     for (std::size_t c = 0; c < k; ++c) owed_all += std::max(0.0, owed[c]), alive_all += alive[c];
     const double rate = alive_all > 0.0 ? owed_all / alive_all : 0.0;
     double debt = 0.0;
     bool any = false;
-    for (const std::uint32_t i : order) {
+    for (std::size_t p = 0; p < n && !done(); ++p) {
+      const std::uint32_t i = order[p];
       if (!keep[i]) continue;
-      const double m = in.measure[i];
-      debt += rate * m;
-      if (debt >= m / 2 && owed[cls[i]] >= m / 2 && removable(i, level)) {
-        debt -= m;
-        remove(i);
+      debt += rate * in.measure[i];
+      // The candidate: in the window, owing, allowed; the class furthest behind, first in the walk.
+      std::uint32_t best = 0;
+      double best_behind = -1.0;
+      for (std::size_t q = p; q < std::min(n, p + kWindow); ++q) {
+        const std::uint32_t j = order[q];
+        if (!keep[j] || owed[cls[j]] < in.measure[j] / 2 || behind(cls[j]) <= best_behind) continue;
+        if (!removable(j, level)) continue;
+        best = j;
+        best_behind = behind(cls[j]);
+      }
+      if (best_behind >= 0.0 && debt >= in.measure[best] / 2) {
+        debt -= in.measure[best];
+        remove(best);
         report.level = std::min(report.level, level);
         any = true;
-        if (done()) break;
       }
     }
     return any;

@@ -10,12 +10,14 @@
 //  * the contacts are kept where they can be: a removal must leave every neighbour with at least
 //    min(level, the contacts it had) contacts (walls count), at level = D first, then D - 1 ..
 //    1, then 0 (any particle; reached only when no removal keeps every neighbour touched);
-//  * the place is even: the particles are walked along a space-filling curve (`place`, a Morton
-//    key of cells of about a diameter) and each class's share is paid by error diffusion along it
-//    (a particle goes when the debt run up reaches half its measure; a debt the contact rule
-//    blocks is paid by the next particles, nearby), so every stretch of the curve, hence every
-//    region of a few particles and more, loses its share of its solid; random removal instead
-//    leaves a binomial noise (2D, cells of 8 diameters: sd 0.03 of solid fraction);
+//  * the place is even: the particles are walked along a space-filling curve (`place`, a Hilbert
+//    index of cells of about a diameter) and the share is paid by error diffusion along it: the
+//    debt runs up with the measure walked, and once it reaches half of the best candidate among
+//    the next few particles (its class the furthest behind, the contact rule allowing) that one
+//    goes; so every stretch of the curve, hence every compact region of a few particles and more,
+//    loses its share of its solid, and the classes keep pace everywhere. Measured (cells of 8
+//    diameters, experiments/target-fraction): sd 0.003-0.008 in 3D, ~0.02 in 2D (65 disks a
+//    cell), where random removal leaves a binomial noise (2D: 0.03);
 //  * the target is met as closely as a particle allows: a removal is made only while the solid
 //    left stays at least half the particle above the target, so it ends within half the
 //    largest particle's measure of it.
@@ -51,18 +53,41 @@ struct ThinningInput {
   std::span<const double> size;             ///< each particle's size (radius), for the classes
   std::span<const ThinningContact> contacts;  ///< particle pairs in contact
   std::span<const std::uint32_t> wall_contacts;  ///< per particle: contacts with the container
-  std::span<const std::uint64_t> place;      ///< per particle: its place along the walk (morton_key); empty: random
+  std::span<const std::uint64_t> place;      ///< per particle: its place along the walk (hilbert_key); empty: random
 };
 
-/// The Morton key (bits of the cell indices interleaved) of the cell of `edge` holding x, cells
-/// counted from `lo`, at most 2^21 per axis: particles close in space are mostly close in it.
+/// The index along a Hilbert curve of the cell of `edge` holding x, cells counted from `lo`, at
+/// most 2^21 per axis: a stretch of the curve is a compact region (a Morton order jumps across
+/// regions at every power of two, and a cell of the analysis then holds many short stretches).
+/// Skilling's transpose form (AIP Conf. Proc. 707, 381, 2004), any dimension.
 template <int D>
-std::uint64_t morton_key(const Vec<D>& x, const Vec<D>& lo, double edge) {
-  std::uint64_t key = 0;
-  for (int k = 0; k < D; ++k) {
-    const auto cell = static_cast<std::uint64_t>(std::clamp(std::floor((x[k] - lo[k]) / edge), 0.0, 2097151.0));
-    for (int b = 0; b < 21; ++b) key |= ((cell >> b) & 1u) << (b * D + k);
+std::uint64_t hilbert_key(const Vec<D>& x, const Vec<D>& lo, double edge) {
+  constexpr int kBits = 21;
+  std::uint32_t X[D];
+  for (int k = 0; k < D; ++k)
+    X[k] = static_cast<std::uint32_t>(std::clamp(std::floor((x[k] - lo[k]) / edge), 0.0, double((1u << kBits) - 1)));
+  // Axes to transpose: undo the excess work of the inverse, then Gray-encode.
+  for (std::uint32_t q = 1u << (kBits - 1); q > 1; q >>= 1) {
+    const std::uint32_t p = q - 1;
+    for (int i = 0; i < D; ++i) {
+      if (X[i] & q) {
+        X[0] ^= p;
+      } else {
+        const std::uint32_t t = (X[0] ^ X[i]) & p;
+        X[0] ^= t;
+        X[i] ^= t;
+      }
+    }
   }
+  for (int i = 1; i < D; ++i) X[i] ^= X[i - 1];
+  std::uint32_t t = 0;
+  for (std::uint32_t q = 1u << (kBits - 1); q > 1; q >>= 1)
+    if (X[D - 1] & q) t ^= q - 1;
+  for (int i = 0; i < D; ++i) X[i] ^= t;
+  // The transposed bits, interleaved from the top.
+  std::uint64_t key = 0;
+  for (int b = kBits - 1; b >= 0; --b)
+    for (int i = 0; i < D; ++i) key = (key << 1) | ((X[i] >> b) & 1u);
   return key;
 }
 
