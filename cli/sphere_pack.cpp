@@ -132,6 +132,28 @@ void fill_tet_mesh(const Scene& scene, SphereRun<3>& run) {
   else if (run.densified->stop == VoidFillingStop::ParticleCount) run.stop = StopReason::ParticleCount;
 }
 
+/// Paper 003: the list of the target (its solid phi V drawn from the law) or of stop.particles,
+/// stacked largest first.
+template <int D>
+void stack(const Scene& scene, SphereRun<D>& run) {
+  const Container<D>& container = *scene.container<D>();
+  Rng rng(scene.seed);
+  std::vector<double> radii;
+  if (scene.target_solid_fraction) {
+    radii = radii_for_measure<D>(*scene.radii, *scene.target_solid_fraction * container.measure(), rng);
+  } else {
+    for (std::uint64_t k = 0; k < *scene.stop.max_particles; ++k) radii.push_back(scene.radii->sample(rng));
+  }
+  const StackingParameters& p = scene.packer.stacking;
+  const StackingOptions o{p.random_tries,      p.near_tries, p.two_contact_tries, p.nuclei,
+                          p.pairs_per_nucleus, p.reshapes,   p.contacts_first};
+  run.contact_tolerance = scene.packer.contact_tolerance;
+  run.stacked = stack_graded<D>(container, std::move(radii), o, scene.seed ^ 0x57AC'4ED0'0000'0003ull, run.contact_tolerance,
+                                run.packing);
+  run.solid_measure = run.stacked->solid_placed;
+  run.seconds = run.stacked->seconds;
+}
+
 /// Each region's solid fraction (its spheres by their centres) against its phi0.
 void add_region_lines(const SceneRegions& regions, const Packing<3>& packing, PackCheck& c) {
   std::vector<double> solid(regions.count(), 0.0);
@@ -166,6 +188,11 @@ typename SpherePack<D>::Result SpherePack<D>::pack(const Scene& scene, const Pro
       return run;
     }
   }
+  if (scene.packer.method == "stacking") {
+    stack<D>(scene, run);
+    if (scene.densify) fill_scene_voids<D>(scene, run);
+    return run;
+  }
   if (scene.densify && scene.densify->split) {  // the front packs the law's part above the split
     Scene above = scene;
     above.radii = std::make_shared<const SplitRadius>(scene.radii, *scene.densify->split, SplitRadius::Side::Above);
@@ -196,6 +223,8 @@ std::string SpherePack<D>::stop_text(const Result& run) {
                                                        : to_string(run.stop);
   if (run.densified) s += std::string("; void filling: ") + to_string(run.densified->stop);
   if (run.thinned) s += "; thinned to the target";
+  if (run.stacked) s = run.stacked->unplaced ? "stacking: " + std::to_string(run.stacked->unplaced) + " found no place"
+                                             : std::string("stacking: every particle placed");
   return s;
 }
 
@@ -228,7 +257,29 @@ PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth
     c.summary_lines += line;
     c.info.emplace_back("target_volume_fraction", "not reached");
   }
-  add_target_lines(c, scene, res.thinned, res.solid_measure, container.measure(), stop_text(res));
+  add_target_lines(c, scene, res.thinned, res.solid_measure, container.measure(), stop_text(res),
+                   res.stacked && res.stacked->unplaced == 0 && !res.densified);
+  if (const auto& s = res.stacked) {
+    char line[400];
+    std::snprintf(line, sizeof line,
+                  "  stacking       %llu asked (volume fraction %.4f), %llu placed: %llu random, %llu near, %llu two-contact, "
+                  "%llu three-contact; %llu reshape passes (%llu moved); %llu without a place; %.3f s\n",
+                  static_cast<unsigned long long>(s->asked), s->solid_asked / container.measure(),
+                  static_cast<unsigned long long>(s->placed), static_cast<unsigned long long>(s->by_random),
+                  static_cast<unsigned long long>(s->by_near), static_cast<unsigned long long>(s->by_two_contact),
+                  static_cast<unsigned long long>(s->by_three_contact), static_cast<unsigned long long>(s->reshape_passes),
+                  static_cast<unsigned long long>(s->reshape_moves), static_cast<unsigned long long>(s->unplaced), s->seconds);
+    c.summary_lines += line;
+    c.metrics.emplace_back("stacking_volume_fraction_asked", s->solid_asked / container.measure());
+    c.counters.insert(c.counters.end(), {{"stacking_asked", s->asked},
+                                         {"stacking_random", s->by_random},
+                                         {"stacking_near", s->by_near},
+                                         {"stacking_two_contact", s->by_two_contact},
+                                         {"stacking_three_contact", s->by_three_contact},
+                                         {"stacking_reshape_passes", s->reshape_passes},
+                                         {"stacking_reshape_moves", s->reshape_moves},
+                                         {"stacking_unplaced", s->unplaced}});
+  }
   if constexpr (D == 3) {
     if (!scene.regions.empty()) add_region_lines(SceneRegions(scene), res.packing, c);
   }

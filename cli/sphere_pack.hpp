@@ -1,6 +1,7 @@
 #pragma once
 // `frontpack pack` for a scene of spheres (disks): the advancing front over centres and radii (or
-// paper 000's fill of a tetrahedral mesh, whose step 7b is the void filling), the void filling
+// paper 000's fill of a tetrahedral mesh, whose step 7b is the void filling, or paper 003's graded
+// stacking), the void filling
 // the scene may ask for (`densify:`), the thinning to its `target:`, then every figure of `frontpack analyze`
 // (the independent validation included). `frontpack densify` runs the same stage on a packing
 // read from a file.
@@ -11,6 +12,7 @@
 #include "cli/target_thinning.hpp"
 #include "core/io/scene.hpp"
 #include "densify/void_filling.hpp"
+#include "fill/graded_stacking.hpp"
 #include "fill/tet_mesh_fill.hpp"
 #include "front/pack_result.hpp"
 
@@ -18,12 +20,13 @@ namespace fp {
 
 class BlockExchange;
 
-/// A packing of spheres and how it was made: by the front, the tetrahedral-mesh fill, or given
+/// A packing of spheres and how it was made: by the front, the tetrahedral-mesh fill, the stacking, or given
 /// (frontpack densify); then perhaps its voids filled.
 template <int D>
 struct SphereRun : PackResult<D> {
   bool given = false;                            ///< read from a file, not packed
   std::optional<TetFillReport> tet_filled;       ///< packed by the tetrahedral-mesh fill (steps 2-7a)
+  std::optional<StackingReport> stacked;         ///< packed by the graded stacking (paper 003)
   std::optional<VoidFillingReport> densified;    ///< the void filling, when the scene asks for it
   std::optional<TargetThinning> thinned;         ///< brought down to the scene's `target:`
 };

@@ -35,10 +35,19 @@ std::vector<char> particles_to_keep(const Scene& scene, const Container<D>& cont
 }
 
 void add_target_lines(PackCheck& c, const Scene& scene, const std::optional<TargetThinning>& thinned, double solid,
-                      double container, const std::string& stop) {
+                      double container, const std::string& stop, bool listed) {
   if (!scene.target_solid_fraction) return;
   const double phi = *scene.target_solid_fraction, solid_fraction = solid / container;
   char line[480];
+  c.metrics.emplace_back("target_solid_fraction", phi);
+  if (listed) {
+    std::snprintf(line, sizeof line,
+                  "  target         solid fraction %.4g (porosity %.4g, void ratio %.4g): %.4f of the container, its "
+                  "list placed in full\n",
+                  phi, 1 - phi, 1 / phi - 1, solid_fraction);
+    c.summary_lines += line;
+    return;
+  }
   if (!thinned) {
     if (!(solid_fraction < phi)) return;
     std::snprintf(line, sizeof line, "  target         volume fraction %.4g not reached: %.4f (stop: %s)\n", phi,
@@ -57,8 +66,7 @@ void add_target_lines(PackCheck& c, const Scene& scene, const std::optional<Targ
                 static_cast<unsigned long long>(t.removed), static_cast<unsigned long long>(t.before), t.level,
                 static_cast<unsigned long long>(t.lost_every_contact), thinned->seconds);
   c.summary_lines += line;
-  c.metrics.insert(c.metrics.end(), {{"target_solid_fraction", phi},
-                                     {"thinning_volume_fraction_before", t.measure_before / measure},
+  c.metrics.insert(c.metrics.end(), {{"thinning_volume_fraction_before", t.measure_before / measure},
                                      {"thinning_seconds", thinned->seconds}});
   c.counters.insert(c.counters.end(), {{"thinning_removed", t.removed},
                                        {"thinning_contact_level", static_cast<std::uint64_t>(t.level)},

@@ -38,8 +38,9 @@ bool above_target(const Scene& scene, double solid) {
 }
 
 /// The summary line, metrics and counters of the thinning, or the line saying the target was not
-/// reached (`solid`: the packing's measure, `container`: the container's).
+/// reached (`solid`: the packing's measure, `container`: the container's). `listed`: the packer
+/// placed a list made for the target in full (the stacking), within half a particle of it.
 void add_target_lines(PackCheck& c, const Scene& scene, const std::optional<TargetThinning>& thinned, double solid,
-                      double container, const std::string& stop);
+                      double container, const std::string& stop, bool listed = false);
 
 }  // namespace fp

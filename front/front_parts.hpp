@@ -11,6 +11,7 @@
 #include "core/geometry/container.hpp"
 #include "core/geometry/vec.hpp"
 #include "core/io/scene.hpp"
+#include "core/sampling/random_unit.hpp"
 #include "core/sampling/rng.hpp"
 #include "front/pack_result.hpp"
 
@@ -69,17 +70,7 @@ Vec<D> local_seed_point(const Container<D>& container, const PackerOptions& opt)
 }
 
 /// A uniformly distributed unit vector (2 draws in 3D, 1 in 2D).
-template <int D>
-Vec<D> random_unit(Rng& rng) {
-  if constexpr (D == 2) {
-    const double phi = 2 * kPi * rng.uniform01();
-    return Vec2(std::cos(phi), std::sin(phi));
-  } else {
-    const double z = 2 * rng.uniform01() - 1, phi = 2 * kPi * rng.uniform01();
-    const double s = std::sqrt(std::max(0.0, 1 - z * z));
-    return Vec3(s * std::cos(phi), s * std::sin(phi), z);
-  }
-}
+using fp::random_unit;  // core/sampling/random_unit.hpp
 
 /// Directions spread evenly over the unit sphere (Fibonacci lattice) or circle, n of them.
 template <int D>

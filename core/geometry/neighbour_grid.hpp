@@ -67,6 +67,16 @@ class NeighbourGrid {
     }
   }
 
+  /// Takes an inserted particle out (a particle moved: erase, then insert at its new centre).
+  /// O(particles in its cell).
+  void erase(int id) {
+    const Item& it = items_[id];
+    const int l = level_of(it.r);
+    Level& L = levels_[l];
+    unlink(L.head[L.cells.index_of(it.c)], id, &Item::next);
+    if (l > 0) unlink(L.block_head[levels_[0].cells.index_of(it.c)], id, &Item::next_in_block);
+  }
+
   /// Calls f(id) for every inserted particle that may lie within `reach` of c, i.e. whose ball
   /// (centre c_k, radius r_k) may come closer than `reach` to c: |c - c_k| <= reach + r_k.
   /// A superset; the caller filters with exact distances.
@@ -200,6 +210,19 @@ class NeighbourGrid {
         for (int id = L.head[k]; id >= 0; id = items_[id].next) f(id, items_[id]);
       });
     }
+  }
+
+  /// Removes `id` from the singly linked list starting at `head`, linked through `link`.
+  void unlink(int& head, int id, int Item::*link) {
+    if (head == id) {
+      head = items_[id].*link;
+      return;
+    }
+    for (int k = head; k >= 0; k = items_[k].*link)
+      if (items_[k].*link == id) {
+        items_[k].*link = items_[id].*link;
+        return;
+      }
   }
 
   int level_of(double r) const {

@@ -74,11 +74,24 @@ struct TetMeshOptions {
   std::optional<double> mesh_edge;
 };
 
+/// The graded large-first stacking (fill/graded_stacking.hpp, paper 003): tries per step.
+struct StackingParameters {
+  int random_tries = 4;        ///< (5) completely random positions per particle
+  int near_tries = 2;          ///< (6) random positions near a nucleus
+  int two_contact_tries = 4;   ///< (7) random positions touching a nucleus and a neighbour
+  int nuclei = 32;             ///< (8) nuclei scanned for three-contact positions, per particle
+  int pairs_per_nucleus = 256; ///< (8) pairs of bodies that can both touch, tried around a nucleus
+  int reshapes = 8;            ///< (11) reshape passes at most (0: none)
+  bool contacts_first = false; ///< `order: contacts_first`: (8) first, then (7), (6), (5); `paper`: (5) .. (8)
+};
+
 struct PackerOptions {
   /// "front": the advancing front; "tet_mesh": paper 000's packing of a tetrahedral mesh (a .msh
-  /// container), followed by its void filling (step 7b).
+  /// container), followed by its void filling (step 7b); "stacking": paper 003's graded
+  /// large-first stacking of the list the target (or stop.particles) makes.
   std::string method = "front";
   TetMeshOptions tet_mesh;                   ///< method tet_mesh only
+  StackingParameters stacking;               ///< method stacking only
   FrontPick front_pick = FrontPick::ClosestToSeed;
   CandidateChoice candidate = CandidateChoice::ClosestToSeed;
   PairOrder pair_order = PairOrder::NearestFirst;

@@ -622,7 +622,8 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
   const Map m = v.map();
   m.check_known({"method", "front", "candidate", "pair_order", "contact_bodies", "probe_smallest", "walls", "radius_pool", "contact_tolerance",
                  "grid_cell_factor", "hierarchical_grid_ratio", "seed_point", "minimisation", "contact_solver", "threads", "block_edge",
-                 "overlap", "z_min", "loose", "fallback_r_min", "mesh_edge"});
+                 "overlap", "z_min", "loose", "fallback_r_min", "mesh_edge", "random_tries", "near_tries",
+                 "two_contact_tries", "nuclei", "pairs_per_nucleus", "reshapes", "order"});
   if (auto x = m.find("contact_solver")) {
     if (!shapes)
       x->fail("used by particle templates only; this scene has spheres ('particles: {radius: ...}'), whose contacts are "
@@ -636,9 +637,26 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
     parse_minimisation(*x, p.minimisation);
   }
   if (auto x = m.find("method")) {
-    p.method = x->choice({"front", "tet_mesh"});
+    p.method = x->choice({"front", "tet_mesh", "stacking"});
     if (p.method == "tet_mesh" && (D != 3 || shapes))
       x->fail("the tetrahedral-mesh packer (paper 000) packs spheres in 3D: it needs dimension: 3 and 'particles: {radius: ...}'");
+    if (p.method == "stacking" && shapes)
+      x->fail("the graded stacking (paper 003) packs spheres (disks): it needs 'particles: {radius: ...}'");
+  }
+  const std::pair<const char*, int StackingParameters::*> stacking_keys[] = {
+      {"random_tries", &StackingParameters::random_tries},   {"near_tries", &StackingParameters::near_tries},
+      {"two_contact_tries", &StackingParameters::two_contact_tries}, {"nuclei", &StackingParameters::nuclei},
+      {"pairs_per_nucleus", &StackingParameters::pairs_per_nucleus}, {"reshapes", &StackingParameters::reshapes}};
+  for (const auto& [key, member] : stacking_keys)
+    if (auto x = m.find(key)) {
+      if (p.method != "stacking") x->fail("a parameter of the graded stacking: needs 'method: stacking'");
+      const std::uint64_t n = x->unsigned_integer();
+      if (n > 1000000) x->fail("must be an integer from 0 to 1000000 (got " + x->node().Scalar() + ")");
+      p.stacking.*member = static_cast<int>(n);
+    }
+  if (auto x = m.find("order")) {
+    if (p.method != "stacking") x->fail("a parameter of the graded stacking: needs 'method: stacking'");
+    p.stacking.contacts_first = x->choice({"paper", "contacts_first"}) == "contacts_first";
   }
   for (const char* key : {"overlap", "z_min", "loose", "fallback_r_min", "mesh_edge"})
     if (auto x = m.find(key); x && p.method != "tet_mesh")
@@ -1139,6 +1157,10 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
       scene.target_solid_fraction = parse_target(*t);
       scene.spots["target"] = t->spot();
     }
+    if (scene.packer.method == "stacking" && !scene.target_solid_fraction && !scene.stop.max_particles)
+      root.find("packer")->map().find("method")->fail(
+          "the graded stacking (paper 003) places a list of particles made from the gradation and a target: give "
+          "'target: {solid_fraction | porosity | void_ratio: ...}' (the list's solid) or 'stop: {particles: N}'");
     if (auto o = root.find("output")) scene.outputs = parse_outputs(*o);
   } catch (const YAML::Exception& e) {  // not expected: every access is checked first
     ctx.fail(e.mark, "", e.msg);

@@ -233,3 +233,45 @@ TEST(NeighbourGrid, RejectsInvalidParameters) {
 
 }  // namespace
 }  // namespace fp
+
+namespace fp {
+namespace {
+
+// erase + insert (a particle moved, graded stacking's reshape): queries then see the particle at
+// its new centre only, for every level of a wide hierarchy, and the other particles unchanged.
+TEST(NeighbourGrid, ErasedAndMovedParticlesAreFoundWhereTheyAre) {
+  Rng rng(11);
+  const Aabb<3> box{Vec3::Zero(), Vec3::Constant(10.0)};
+  NeighbourGrid<3> grid(box, 0.01, 0.5, 2.0, 4.0);
+  std::vector<Vec3> c;
+  std::vector<double> r;
+  for (int i = 0; i < 3000; ++i) {
+    c.push_back(uniform_in<3>(rng, box.lo, box.hi));
+    r.push_back(0.01 * std::pow(50.0, rng.uniform01()));
+    grid.insert(i, c.back(), r.back());
+  }
+  for (int i = 0; i < 3000; i += 3) {  // move a third, erase a third for good
+    grid.erase(i);
+    c[i] = uniform_in<3>(rng, box.lo, box.hi);
+    grid.insert(i, c[i], r[i]);
+    if (i + 1 < 3000) grid.erase(i + 1);
+  }
+  for (int q = 0; q < 300; ++q) {
+    const Vec3 x = uniform_in<3>(rng, box.lo, box.hi);
+    const double reach = rng.uniform(0.0, 1.0);
+    std::vector<int> seen;
+    grid.for_each_within(x, reach, [&](int id, const Vec3& ck, double rk, double) {
+      EXPECT_EQ(ck, c[id]);
+      EXPECT_EQ(rk, r[id]);
+      seen.push_back(id);
+    });
+    std::sort(seen.begin(), seen.end());
+    std::vector<int> expected;
+    for (int i = 0; i < 3000; ++i)
+      if ((i % 3 != 1) && (c[i] - x).norm() <= reach + r[i]) expected.push_back(i);
+    EXPECT_EQ(seen, expected) << "query " << q;
+  }
+}
+
+}  // namespace
+}  // namespace fp

@@ -1,0 +1,83 @@
+// `packer: {method: stacking}` (paper 003) end to end: the list of the target placed in full,
+// the container at the target, `frontpack validate` passing the output, byte-identical reruns,
+// 2D and a count instead of a target; a list beyond the law's reach leaves particles out, which
+// the summary says and the radii test catches (exit 3); bad keys exit 2 and write nothing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "cli_test_util.hpp"
+
+namespace fptest {
+namespace {
+
+double record_metric(const std::string& record, const std::string& key) {
+  const std::string quoted = "\"" + key + "\": ";
+  const auto at = record.find(quoted);
+  return at == std::string::npos ? NAN : std::stod(record.substr(at + quoted.size()));
+}
+
+const char* kBox3 = "dimension: 3\nseed: 4\ncontainer: {type: box, min: [0, 0, 0], max: [0.5, 0.5, 0.5]}\n"
+                    "particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}\n";
+
+TEST(CliStacking, PlacesTheTargetsListAndValidates) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", std::string(kBox3) + "packer: {method: stacking}\ntarget: {porosity: 0.55}\n");
+  const RunResult r = run_frontpack(dir, "pack s.yaml -o s.csv --record rec.json");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("its list placed in full"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("stacking       "), std::string::npos) << r.out;
+  const std::string rec = read_bytes(dir.work() / "rec.json");
+  EXPECT_NEAR(record_metric(rec, "volume_fraction_container"), 0.45, 0.005);
+  EXPECT_EQ(record_metric(rec, "stacking_unplaced"), 0.0);
+  EXPECT_EQ(run_frontpack(dir, "validate s.csv --scene s.yaml").exit_code, 0);
+  ASSERT_EQ(run_frontpack(dir, "pack s.yaml -o again.csv -q").exit_code, 0);
+  EXPECT_EQ(read_bytes(dir.work() / "again.csv"), read_bytes(dir.work() / "s.csv"));
+}
+
+TEST(CliStacking, DisksAndACount) {
+  TempDir dir;
+  write_bytes(dir.work() / "d.yaml",
+              "dimension: 2\nseed: 1\ncontainer: {type: rectangle, min: [0, 0], max: [1, 1]}\n"
+              "particles: {radius: {distribution: uniform, min: 0.005, max: 0.01}}\n"
+              "packer: {method: stacking, order: contacts_first}\ntarget: {void_ratio: 0.6}\n");
+  const RunResult d = run_frontpack(dir, "pack d.yaml -o d.csv --record d.json");
+  ASSERT_EQ(d.exit_code, 0) << d.out << d.err;
+  EXPECT_NEAR(record_metric(read_bytes(dir.work() / "d.json"), "volume_fraction_container"), 1 / 1.6, 0.005);
+  write_bytes(dir.work() / "n.yaml", std::string(kBox3) + "packer: {method: stacking}\nstop: {particles: 500}\n");
+  ASSERT_EQ(run_frontpack(dir, "pack n.yaml -o n.csv -q").exit_code, 0);
+  EXPECT_EQ(lines_of(read_bytes(dir.work() / "n.csv")).size(), 501u) << "a header and the 500 of the list";
+}
+
+TEST(CliStacking, BeyondTheLawsReachIsSaidAndFailsTheRadiiTest) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", std::string(kBox3) + "packer: {method: stacking}\ntarget: {solid_fraction: 0.72}\n");
+  const RunResult r = run_frontpack(dir, "pack s.yaml -o s.csv");
+  EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+  EXPECT_NE(r.out.find("without a place"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("not reached"), std::string::npos) << r.out;
+}
+
+TEST(CliStacking, BadKeysAreRefusedAndWriteNothing) {
+  TempDir dir;
+  const std::pair<std::string, const char*> cases[] = {
+      {std::string(kBox3) + "packer: {method: stacking}\n", "places a list of particles"},
+      {std::string(kBox3) + "packer: {nuclei: 4}\ntarget: {solid_fraction: 0.4}\n", "needs 'method: stacking'"},
+      {std::string(kBox3) + "packer: {method: stacking, order: sideways}\ntarget: {solid_fraction: 0.4}\n", "sideways"},
+      {"dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [1, 1, 1]}\nparticles:\n"
+       "  - {shape: ellipsoid, aspect_ratio: 0.5, size: {distribution: constant, value: 0.05}}\n"
+       "packer: {method: stacking}\ntarget: {solid_fraction: 0.4}\n",
+       "packs spheres"},
+  };
+  for (const auto& [scene, message] : cases) {
+    write_bytes(dir.work() / "bad.yaml", scene);
+    const RunResult r = run_frontpack(dir, "pack bad.yaml -o out.csv");
+    EXPECT_EQ(r.exit_code, 2) << scene;
+    EXPECT_NE(r.err.find(message), std::string::npos) << scene << r.err;
+    EXPECT_FALSE(fs::exists(dir.work() / "out.csv")) << scene;
+  }
+}
+
+}  // namespace
+}  // namespace fptest
