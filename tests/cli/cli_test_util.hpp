@@ -13,6 +13,7 @@
 #include <iterator>
 #include <set>
 #include <sstream>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -99,6 +100,13 @@ inline std::set<std::string> listing(const fs::path& dir) {
 }
 
 /// Splits text into lines (without the newline characters).
+/// The number after `"key": ` in a run record's text (its first occurrence); NaN when absent.
+inline double record_number(const std::string& record, const std::string& key) {
+  const std::string quoted = "\"" + key + "\": ";
+  const auto at = record.find(quoted);
+  return at == std::string::npos ? std::nan("") : std::stod(record.substr(at + quoted.size()));
+}
+
 inline std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
   std::istringstream in(text);

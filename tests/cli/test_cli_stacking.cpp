@@ -12,11 +12,6 @@
 namespace fptest {
 namespace {
 
-double record_metric(const std::string& record, const std::string& key) {
-  const std::string quoted = "\"" + key + "\": ";
-  const auto at = record.find(quoted);
-  return at == std::string::npos ? NAN : std::stod(record.substr(at + quoted.size()));
-}
 
 const char* kBox3 = "dimension: 3\nseed: 4\ncontainer: {type: box, min: [0, 0, 0], max: [0.5, 0.5, 0.5]}\n"
                     "particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}\n";
@@ -29,8 +24,8 @@ TEST(CliStacking, PlacesTheTargetsListAndValidates) {
   EXPECT_NE(r.out.find("its list placed in full"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("stacking       "), std::string::npos) << r.out;
   const std::string rec = read_bytes(dir.work() / "rec.json");
-  EXPECT_NEAR(record_metric(rec, "volume_fraction_container"), 0.45, 0.005);
-  EXPECT_EQ(record_metric(rec, "stacking_unplaced"), 0.0);
+  EXPECT_NEAR(record_number(rec, "volume_fraction_container"), 0.45, 0.005);
+  EXPECT_EQ(record_number(rec, "stacking_unplaced"), 0.0);
   EXPECT_EQ(run_frontpack(dir, "validate s.csv --scene s.yaml").exit_code, 0);
   ASSERT_EQ(run_frontpack(dir, "pack s.yaml -o again.csv -q").exit_code, 0);
   EXPECT_EQ(read_bytes(dir.work() / "again.csv"), read_bytes(dir.work() / "s.csv"));
@@ -44,7 +39,7 @@ TEST(CliStacking, DisksAndACount) {
               "packer: {method: stacking, order: contacts_first}\ntarget: {void_ratio: 0.6}\n");
   const RunResult d = run_frontpack(dir, "pack d.yaml -o d.csv --record d.json");
   ASSERT_EQ(d.exit_code, 0) << d.out << d.err;
-  EXPECT_NEAR(record_metric(read_bytes(dir.work() / "d.json"), "volume_fraction_container"), 1 / 1.6, 0.005);
+  EXPECT_NEAR(record_number(read_bytes(dir.work() / "d.json"), "volume_fraction_container"), 1 / 1.6, 0.005);
   write_bytes(dir.work() / "n.yaml", std::string(kBox3) + "packer: {method: stacking}\nstop: {particles: 500}\n");
   ASSERT_EQ(run_frontpack(dir, "pack n.yaml -o n.csv -q").exit_code, 0);
   EXPECT_EQ(lines_of(read_bytes(dir.work() / "n.csv")).size(), 501u) << "a header and the 500 of the list";

@@ -14,12 +14,6 @@
 namespace fptest {
 namespace {
 
-double metric(const std::string& record, const std::string& key) {
-  const std::string quoted = "\"" + key + "\": ";
-  const auto at = record.find(quoted);
-  if (at == std::string::npos) return NAN;
-  return std::stod(record.substr(at + quoted.size()));
-}
 
 std::string box_scene(const std::string& extra, double lo = 0.0, double side = 0.5, double r = 0.01) {
   auto num = [](double x) {
@@ -42,10 +36,10 @@ TEST(CliTarget, TheWholeContainerAtTheTargetInEveryCell) {
     ASSERT_EQ(r.exit_code, 0) << r.out << r.err;  // exit 0: the validation, the radii test included, passed
     EXPECT_NE(r.out.find("thinned to the target"), std::string::npos) << r.out;
     const std::string rec = read_bytes(dir.work() / (name + ".json"));
-    EXPECT_NEAR(metric(rec, "volume_fraction_container"), phi, 0.005) << phi;
-    EXPECT_LE(metric(rec, "volume_fraction_cells_std"), 0.02) << phi;
-    EXPECT_GT(metric(rec, "radii_pvalue"), 0.01) << phi;
-    EXPECT_EQ(metric(rec, "thinning_lost_every_contact"), 0.0) << "no sphere left floating at " << phi;
+    EXPECT_NEAR(record_number(rec, "volume_fraction_container"), phi, 0.005) << phi;
+    EXPECT_LE(record_number(rec, "volume_fraction_cells_std"), 0.02) << phi;
+    EXPECT_GT(record_number(rec, "radii_pvalue"), 0.01) << phi;
+    EXPECT_EQ(record_number(rec, "thinning_lost_every_contact"), 0.0) << "no sphere left floating at " << phi;
     // The independent check of the output file.
     const RunResult v = run_frontpack(dir, "validate " + name + ".csv --scene " + name + ".yaml");
     EXPECT_EQ(v.exit_code, 0) << v.out;
@@ -76,7 +70,7 @@ TEST(CliTarget, ShiftedAndScaledScenesReachItAlike) {
   for (const char* s : {"plain", "far", "tiny", "huge"}) {
     const RunResult r = run_frontpack(dir, std::string("pack ") + s + ".yaml -o " + s + ".csv --record " + s + ".json");
     ASSERT_EQ(r.exit_code, 0) << s << r.out << r.err;
-    EXPECT_NEAR(metric(read_bytes(dir.work() / (std::string(s) + ".json")), "volume_fraction_container"), 0.45, 0.005) << s;
+    EXPECT_NEAR(record_number(read_bytes(dir.work() / (std::string(s) + ".json")), "volume_fraction_container"), 0.45, 0.005) << s;
     const std::size_t n = lines_of(read_bytes(dir.work() / (std::string(s) + ".csv"))).size();
     if (plain == 0) plain = n;
     if (std::string(s) == "far") EXPECT_NEAR(static_cast<double>(n), static_cast<double>(plain), 0.01 * plain) << s;
@@ -96,8 +90,8 @@ TEST(CliTarget, DisksAndACylinder) {
     const RunResult r = run_frontpack(dir, std::string("pack ") + s + ".yaml -o " + s + ".csv --record " + s + ".json");
     ASSERT_EQ(r.exit_code, 0) << s << r.out << r.err;
     const std::string rec = read_bytes(dir.work() / (std::string(s) + ".json"));
-    EXPECT_NEAR(metric(rec, "volume_fraction_container"), phi, 0.005) << s;
-    EXPECT_LE(metric(rec, "volume_fraction_cells_std"), 0.02) << s;
+    EXPECT_NEAR(record_number(rec, "volume_fraction_container"), phi, 0.005) << s;
+    EXPECT_LE(record_number(rec, "volume_fraction_cells_std"), 0.02) << s;
     EXPECT_EQ(run_frontpack(dir, std::string("validate ") + s + ".csv --scene " + s + ".yaml").exit_code, 0) << s;
   }
 }
@@ -114,7 +108,7 @@ TEST(CliTarget, ShapesToo) {
   const RunResult r = run_frontpack(dir, "pack poly.yaml -o poly.json --record rec.json");
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("thinned to the target"), std::string::npos) << r.out;
-  EXPECT_NEAR(metric(read_bytes(dir.work() / "rec.json"), "volume_fraction_container"), 0.45, 0.005);
+  EXPECT_NEAR(record_number(read_bytes(dir.work() / "rec.json"), "volume_fraction_container"), 0.45, 0.005);
   EXPECT_EQ(run_frontpack(dir, "validate poly.json --scene poly.yaml").exit_code, 0);
   ASSERT_EQ(run_frontpack(dir, "pack poly.yaml -o again.json -q").exit_code, 0);
   // The same particles (the file's record holds timings, which differ).
