@@ -25,7 +25,7 @@ class Stacker {
   Stacker(const Container<D>& container, double r_min, double r_max, const StackingOptions& o, std::uint64_t seed,
           double tol, Packing<D>& out)
       : C_(container), o_(o), rng_(seed), tol_(tol), P_(out),
-        grid_(container.bounds(), r_min, r_max, 2.0, 4.0), r_max_(r_max) {
+        grid_(container.bounds(), r_min, r_max, 2.0, 4.0) {
     container.prepare_queries(r_max);
     for (std::size_t i = 0; i < P_.size(); ++i) add_to_state(static_cast<int>(i), false);
   }
@@ -288,7 +288,6 @@ class Stacker {
   double tol_;
   Packing<D>& P_;
   NeighbourGrid<D> grid_;
-  double r_max_;
   SphereContactSolver<D> solver_;
   std::vector<char> loose_, in_open_;
   std::vector<int> open_;
