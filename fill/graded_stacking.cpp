@@ -81,7 +81,7 @@ class Stacker {
   bool fits(const Vec<D>& x, double r) const {
     if (!C_.contains_ball(x, r, tol_)) return false;
     bool clear = true;
-    grid_.for_each_within(x, r, [&](int, const Vec<D>& c, double rk, double d2) {
+    grid_.for_each_within(x, r, [&](int, const Vec<D>&, double rk, double d2) {
       const double lim = r + rk - tol_ * std::min(r, rk);
       if (d2 < lim * lim) clear = false;
     });
@@ -141,9 +141,8 @@ class Stacker {
     const Vec<D>& c = P_.centers[b];
     const double rb = P_.radii[b], reach = rb + 2 * r;
     near_.clear();
-    grid_.for_each_within(c, reach, [&](int id, const Vec<D>& ck, double rk, double d2) {
+    grid_.for_each_within(c, reach, [&](int id, const Vec<D>&, double rk, double d2) {
       if (id != b && id != skip) near_.push_back({std::sqrt(d2) - rk, id});
-      (void)ck;
     });
     std::sort(near_.begin(), near_.end());
     walls_.clear();
