@@ -102,6 +102,13 @@ class Stacker {
 
   int nucleus_any() { return static_cast<int>(rng_.below(P_.size())); }
 
+  /// The mobile sphere of radius r for the contact solver.
+  static Mobile<D> ball(double r) {
+    Mobile<D> m;
+    m.radius = r;
+    return m;
+  }
+
   /// (5): completely random positions in the container's bounds.
   bool random_position(double r, Vec<D>& x) {
     const Aabb<D> b = C_.bounds();
@@ -168,7 +175,7 @@ class Stacker {
     } else {
       const std::array<Body<2>, 2> two{Body<2>::sphere(P_.centers[b], P_.radii[b], b), bj};
       std::array<Placement<2>, ContactSolver<2>::kMaxSolutions> out;
-      const int m = solver_.solve(std::span<const Body<2>>(two.data(), 2), Mobile<2>{r}, out);
+      const int m = solver_.solve(std::span<const Body<2>>(two.data(), 2), ball(r), out);
       if (m == 0) return false;
       x = out[rng_.below(static_cast<std::uint64_t>(m))].position;
       return fits(x, r);
@@ -202,7 +209,7 @@ class Stacker {
     if constexpr (D == 2) {
       for (int i = 0; i < n && tried < o_.pairs_per_nucleus; ++i, ++tried) {
         fixed[1] = bodies_[i];
-        if (consider(solver_.solve(std::span<const Body<2>>(fixed.data(), 2), Mobile<2>{r}, out))) return true;
+        if (consider(solver_.solve(std::span<const Body<2>>(fixed.data(), 2), ball(r), out))) return true;
       }
     } else {
       for (int j = 1; j < n && tried < o_.pairs_per_nucleus; ++j)
@@ -214,7 +221,7 @@ class Stacker {
           ++tried;
           fixed[1] = bodies_[i];
           fixed[2] = bodies_[j];
-          if (consider(solver_.solve(std::span<const Body<3>>(fixed.data(), 3), Mobile<3>{r}, out))) return true;
+          if (consider(solver_.solve(std::span<const Body<3>>(fixed.data(), 3), ball(r), out))) return true;
         }
     }
     return found;
@@ -254,14 +261,14 @@ class Stacker {
       for (int j = 1; j < n; ++j)
         for (int a = 0; a < j; ++a) {
           fixed = {bodies_[a], bodies_[j]};
-          consider(solver_.solve(std::span<const Body<2>>(fixed.data(), 2), Mobile<2>{r}, out));
+          consider(solver_.solve(std::span<const Body<2>>(fixed.data(), 2), ball(r), out));
         }
     } else {
       for (int k = 2; k < n; ++k)
         for (int j = 1; j < k; ++j)
           for (int a = 0; a < j; ++a) {
             fixed = {bodies_[a], bodies_[j], bodies_[k]};
-            consider(solver_.solve(std::span<const Body<3>>(fixed.data(), 3), Mobile<3>{r}, out));
+            consider(solver_.solve(std::span<const Body<3>>(fixed.data(), 3), ball(r), out));
           }
     }
     return found;
