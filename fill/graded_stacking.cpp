@@ -132,7 +132,7 @@ class Stacker {
     for (int t = 0; t < o_.nuclei && !open_.empty(); ++t) {
       const std::size_t k = rng_.below(open_.size());
       const int b = open_[k];
-      if (three_contact(b, r, -1, nullptr, x)) return true;
+      if (three_contact(b, r, x)) return true;
       closed_.push_back({r, b});  // no room for r around b: closed until the radii are 10 % smaller
       open_[k] = open_.back();
       open_.pop_back();
@@ -142,14 +142,13 @@ class Stacker {
   }
 
   /// The bodies around nucleus b for a sphere of radius r: its neighbours within reach (nearest
-  /// surface first) and the container's walls within reach. `skip`: a particle left out (the
-  /// one being moved).
-  void gather(int b, double r, int skip) {
+  /// surface first) and the container's walls within reach.
+  void gather(int b, double r) {
     const Vec<D>& c = P_.centers[b];
     const double rb = P_.radii[b], reach = rb + 2 * r;
     near_.clear();
     grid_.for_each_within(c, reach, [&](int id, const Vec<D>&, double rk, double d2) {
-      if (id != b && id != skip) near_.push_back({std::sqrt(d2) - rk, id});
+      if (id != b) near_.push_back({std::sqrt(d2) - rk, id});
     });
     std::sort(near_.begin(), near_.end());
     walls_.clear();
@@ -162,7 +161,7 @@ class Stacker {
   /// (7): a random point of the curve of positions touching b and a random neighbour (3D); in
   /// 2D the two points touching both.
   bool two_contact_random(int b, double r, Vec<D>& x) {
-    gather(b, r, -1);
+    gather(b, r);
     if (near_.empty()) return false;
     const int j = near_[rng_.below(near_.size())].second;
     const Body<D> bj = Body<D>::sphere(P_.centers[j], P_.radii[j], j);
@@ -182,28 +181,29 @@ class Stacker {
     }
   }
 
-  /// (8): a position touching b and D - 1 bodies around it (pairs nearest first), overlapping
-  /// nothing; with `near_to`, the valid one closest to it among every pair tried, else the first.
-  bool three_contact(int b, double r, int skip, const Vec<D>* near_to, Vec<D>& x) {
-    gather(b, r, skip);
+  /// A position the solver gave for `fixed` that can be taken: over the face of every wall among
+  /// them (a facet is solved as its whole plane), inside, overlapping nothing.
+  bool acceptable(const std::array<Body<D>, D>& fixed, const Vec<D>& y, double r) const {
+    for (const Body<D>& b : fixed)
+      if (b.is_wall() && !b.wall->over_face(y, 2 * std::sqrt(2 * tol_) * r)) return false;
+    return fits(y, r);
+  }
+
+  /// (8): the first position touching b and D - 1 bodies around it (pairs nearest first) that
+  /// can be taken.
+  bool three_contact(int b, double r, Vec<D>& x) {
+    gather(b, r);
     const int n = static_cast<int>(bodies_.size());
     std::array<Body<D>, D> fixed;
     fixed[0] = Body<D>::sphere(P_.centers[b], P_.radii[b], b);
     std::array<Placement<D>, ContactSolver<D>::kMaxSolutions> out;
-    bool found = false;
-    double best = std::numeric_limits<double>::infinity();
     int tried = 0;
     auto consider = [&](int m) {
-      for (int q = 0; q < m; ++q) {
-        const Vec<D>& y = out[q].position;
-        bool on_faces = true;
-        for (int k = 1; k < D; ++k)
-          if (fixed[k].is_wall() && !fixed[k].wall->over_face(y, 2 * std::sqrt(2 * tol_) * r)) on_faces = false;
-        if (!on_faces || !fits(y, r)) continue;
-        const double key = near_to ? (y - *near_to).squaredNorm() : 0.0;
-        if (!found || key < best) x = y, best = key, found = true;
-        if (!near_to) return true;
-      }
+      for (int q = 0; q < m; ++q)
+        if (acceptable(fixed, out[q].position, r)) {
+          x = out[q].position;
+          return true;
+        }
       return false;
     };
     if constexpr (D == 2) {
@@ -224,7 +224,7 @@ class Stacker {
           if (consider(solver_.solve(std::span<const Body<3>>(fixed.data(), 3), ball(r), out))) return true;
         }
     }
-    return found;
+    return false;
   }
 
   /// (11) for particle i (out of the grid): the position touching D of its neighbours (walls
@@ -250,11 +250,7 @@ class Stacker {
       for (int q = 0; q < m; ++q) {
         const Vec<D>& y = out[q].position;
         const double key = (y - c).squaredNorm();
-        if (key >= best) continue;
-        bool on_faces = true;
-        for (const Body<D>& b : fixed)
-          if (b.is_wall() && !b.wall->over_face(y, 2 * std::sqrt(2 * tol_) * r)) on_faces = false;
-        if (on_faces && fits(y, r)) x = y, best = key, found = true;
+        if (key < best && acceptable(fixed, y, r)) x = y, best = key, found = true;
       }
     };
     if constexpr (D == 2) {
