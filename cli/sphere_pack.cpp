@@ -250,13 +250,8 @@ PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth
   // A target solid fraction above what the packer reached is said, with why it stopped.
   std::optional<double> phi0 = scene.stop.target_volume_fraction;
   if (res.densified && scene.densify && scene.densify->target_volume_fraction) phi0 = scene.densify->target_volume_fraction;
-  if (phi0 && !scene.target_solid_fraction && scene.regions.empty() && res.solid_measure / container.measure() < *phi0) {
-    char line[200];
-    std::snprintf(line, sizeof line, "  target         volume fraction %.4g not reached: %.4f (stop: %s)\n", *phi0,
-                  res.solid_measure / container.measure(), stop_text(res).c_str());
-    c.summary_lines += line;
-    c.info.emplace_back("target_volume_fraction", "not reached");
-  }
+  if (phi0 && !scene.target_solid_fraction && scene.regions.empty() && res.solid_measure / container.measure() < *phi0)
+    add_not_reached_line(c, *phi0, res.solid_measure / container.measure(), stop_text(res));
   add_target_lines(c, scene, res.thinned, res.solid_measure, container.measure(), stop_text(res),
                    res.stacked && res.stacked->unplaced == 0 && !res.densified);
   if (const auto& s = res.stacked) {

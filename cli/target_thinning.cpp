@@ -1,5 +1,6 @@
 #include "cli/target_thinning.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -34,6 +35,14 @@ std::vector<char> particles_to_keep(const Scene& scene, const Container<D>& cont
   return keep;
 }
 
+void add_not_reached_line(PackCheck& c, double phi, double solid_fraction, const std::string& stop) {
+  char line[200];
+  std::snprintf(line, sizeof line, "  target         volume fraction %.4g not reached: %.4f (stop: %s)\n", phi,
+                solid_fraction, stop.c_str());
+  c.summary_lines += line;
+  c.info.emplace_back("target_volume_fraction", "not reached");
+}
+
 void add_target_lines(PackCheck& c, const Scene& scene, const std::optional<TargetThinning>& thinned, double solid,
                       double container, const std::string& stop, bool listed) {
   if (!scene.target_solid_fraction) return;
@@ -49,11 +58,7 @@ void add_target_lines(PackCheck& c, const Scene& scene, const std::optional<Targ
     return;
   }
   if (!thinned) {
-    if (!(solid_fraction < phi)) return;
-    std::snprintf(line, sizeof line, "  target         volume fraction %.4g not reached: %.4f (stop: %s)\n", phi,
-                  solid_fraction, stop.c_str());
-    c.summary_lines += line;
-    c.info.emplace_back("target_volume_fraction", "not reached");
+    if (solid_fraction < phi) add_not_reached_line(c, phi, solid_fraction, stop);
     return;
   }
   const ThinningReport& t = thinned->report;

@@ -2,7 +2,6 @@
 // The scene's `target:` for every packer (issue 13): a packing above the target solid fraction
 // thinned down to it (densify/thinning.hpp), spheres and shapes alike; what the summary and the
 // run record say of it, or that the target was not reached (with the value reached).
-#include <chrono>
 #include <optional>
 #include <span>
 #include <string>
@@ -36,6 +35,10 @@ template <int D>
 bool above_target(const Scene& scene, double solid) {
   return scene.target_solid_fraction && solid > *scene.target_solid_fraction * scene.container<D>()->measure();
 }
+
+/// The line (and the record's info) saying a target solid fraction `phi` was not reached:
+/// `solid_fraction` reached, and why the packer stopped.
+void add_not_reached_line(PackCheck& c, double phi, double solid_fraction, const std::string& stop);
 
 /// The summary line, metrics and counters of the thinning, or the line saying the target was not
 /// reached (`solid`: the packing's measure, `container`: the container's). `listed`: the packer

@@ -16,8 +16,8 @@
 //    the next few particles (its class the furthest behind, the contact rule allowing) that one
 //    goes; so every stretch of the curve, hence every compact region of a few particles and more,
 //    loses its share of its solid, and the classes keep pace everywhere. Measured (cells of 8
-//    diameters, experiments/target-fraction): sd 0.003-0.008 in 3D, ~0.02 in 2D (65 disks a
-//    cell), where random removal leaves a binomial noise (2D: 0.03);
+//    diameters, experiments/target-fraction): sd 0.004-0.007 in 3D, 0.014-0.035 in 2D (65 disks
+//    a cell), where random removal leaves a binomial noise (2D: 0.03);
 //  * the target is met as closely as a particle allows: a removal is made only while the solid
 //    left stays at least half the particle above the target, so it ends within half the
 //    largest particle's measure of it.
