@@ -11,12 +11,14 @@ namespace fp {
 double overlap_tolerance(const Scene& scene) {
   double epsilon = scene.densify ? scene.densify->overlap : 0.0;
   if (scene.packer.method == "tet_mesh") epsilon = std::max(epsilon, scene.packer.tet_mesh.overlap);
-  return scene.packer.contact_tolerance + epsilon;
+  const double tolerance = scene.packer.contact_tolerance + epsilon;
+  return scene.least_squares ? std::max(tolerance, scene.least_squares->tolerance) : tolerance;
 }
 
 double radii_alpha_of(const Scene& scene) {
   const bool fitted = scene.packer.method == "tet_mesh" || !scene.regions.empty() ||
-                      (scene.densify && scene.densify->radii == VoidRadii::Fit);
+                      (scene.densify && scene.densify->radii == VoidRadii::Fit) ||
+                      (scene.least_squares && scene.least_squares->radii == LeastSquaresRadii::Range);
   return fitted ? 0.0 : kRadiiAlpha;
 }
 

@@ -39,11 +39,13 @@ RadiusDistributionPtr radii_to_check(const Scene& scene);
 /// The overlap a packing of `scene` may have, relative to the smaller radius of a pair (`pack` and
 /// `validate` alike): the contact tolerance, plus the epsilon the tetrahedral-mesh packer or the
 /// void filling allows (epsilon r_min is within epsilon of the smaller radius; the contact
-/// tolerance absorbs the rounding of an overlap placed at exactly epsilon r_min).
+/// tolerance absorbs the rounding of an overlap placed at exactly epsilon r_min); at least the
+/// least-squares densification's tolerance when the scene asks for it.
 double overlap_tolerance(const Scene& scene);
 
 /// The level of the radii test for a packing of `scene`: 0 (their range only) where the radii are
-/// the voids' own (method tet_mesh, densify radii: fit, regions), else kRadiiAlpha.
+/// the voids' own (method tet_mesh, densify radii: fit, regions) or least squares moved them
+/// within it (least_squares radii: range), else kRadiiAlpha.
 double radii_alpha_of(const Scene& scene);
 
 /// The record's figures of an analysis (its validation included) and its table as summary lines.

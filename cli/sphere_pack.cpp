@@ -63,6 +63,18 @@ void fill_scene_voids(const Scene& scene, SphereRun<D>& run) {
   fill<D>(scene, o, run, below);
 }
 
+/// The scene's least-squares densification (paper 001), when it asks for one; the law's range
+/// bounds the radii.
+template <int D>
+void densify_by_least_squares(const Scene& scene, SphereRun<D>& run) {
+  if (!scene.least_squares || run.packing.empty()) return;
+  run.contact_tolerance = std::max(run.contact_tolerance, scene.least_squares->tolerance);
+  run.squared = densify_least_squares<D>(run.packing, *scene.container<D>(), scene.radii->r_min(), scene.radii->r_max(),
+                                         *scene.least_squares, run.contact_tolerance);
+  run.seconds += run.squared->seconds;
+  run.solid_measure = run.squared->solid_after;
+}
+
 /// The scene's `target:` (cli/target_thinning.hpp), contacts found at the run's tolerance.
 template <int D>
 void thin_to_target(const Scene& scene, SphereRun<D>& run) {
@@ -176,6 +188,48 @@ void add_region_lines(const SceneRegions& regions, const Packing<3>& packing, Pa
   }
 }
 
+/// The least-squares densification's line and figures (VF before, at the optimum, after; how
+/// far the radii and the centres moved; what the overlap removal did).
+void add_least_squares_lines(const LeastSquaresReport& q, double measure, LeastSquaresRadii radii, PackCheck& c) {
+  char line[600];
+  std::snprintf(line, sizeof line,
+                "  least squares  radii %s; %zu edges, %zu wall terms; Eq. 4 %.4g -> %.4g in %d evaluations; volume fraction "
+                "%.4f -> %.4f (optimum %.4f, %zu overlaps there, up to %.3g); radii %zu grown, change mean %.4f max %.4f; "
+                "centres moved mean %.4f max %.4f radii; overlap removal: %d relax rounds, %d sweeps, %zu radii clipped "
+                "(up to %.2g), move kept %.4g; %.3f s\n",
+                radii == LeastSquaresRadii::Range ? "in the law's range" : "fixed", q.edges, q.boundary_terms,
+                q.objective_before, q.objective_after, q.evaluations, q.solid_before / measure, q.solid_after / measure,
+                q.solid_solved / measure, q.overlaps_solved, q.max_overlap_solved, q.radii_grown, q.mean_radius_change,
+                q.max_radius_change, q.mean_move, q.max_move, q.relax_rounds, q.sweeps, q.radii_clipped, q.max_clip,
+                q.kept_share, q.seconds);
+  c.summary_lines += line;
+  c.info.emplace_back("least_squares_radii", radii == LeastSquaresRadii::Range ? "range" : "fixed");
+  c.metrics.insert(c.metrics.end(), {{"least_squares_volume_fraction_before", q.solid_before / measure},
+                                     {"least_squares_volume_fraction_optimum", q.solid_solved / measure},
+                                     {"least_squares_volume_fraction_after", q.solid_after / measure},
+                                     {"least_squares_objective_before", q.objective_before},
+                                     {"least_squares_objective_after", q.objective_after},
+                                     {"least_squares_max_overlap_optimum", q.max_overlap_solved},
+                                     {"least_squares_mean_radius_change", q.mean_radius_change},
+                                     {"least_squares_max_radius_change", q.max_radius_change},
+                                     {"least_squares_mean_move", q.mean_move},
+                                     {"least_squares_max_move", q.max_move},
+                                     {"least_squares_max_clip", q.max_clip},
+                                     {"least_squares_kept_share", q.kept_share},
+                                     {"least_squares_seconds", q.seconds},
+                                     {"least_squares_triangulation_seconds", q.triangulation_seconds},
+                                     {"least_squares_solve_seconds", q.solve_seconds}});
+  c.counters.insert(c.counters.end(), {{"least_squares_edges", q.edges},
+                                       {"least_squares_wall_terms", q.boundary_terms},
+                                       {"least_squares_evaluations", static_cast<std::uint64_t>(q.evaluations)},
+                                       {"least_squares_overlaps_optimum", q.overlaps_solved},
+                                       {"least_squares_relax_rounds", static_cast<std::uint64_t>(q.relax_rounds)},
+                                       {"least_squares_relax_evaluations", static_cast<std::uint64_t>(q.relax_evaluations)},
+                                       {"least_squares_sweeps", static_cast<std::uint64_t>(q.sweeps)},
+                                       {"least_squares_radii_clipped", q.radii_clipped},
+                                       {"least_squares_radii_grown", q.radii_grown}});
+}
+
 }  // namespace
 
 template <int D>
@@ -184,6 +238,7 @@ typename SpherePack<D>::Result SpherePack<D>::pack(const Scene& scene, const Pro
   if constexpr (D == 3) {
     if (scene.packer.method == "tet_mesh") {
       fill_tet_mesh(scene, run);
+      densify_by_least_squares<3>(scene, run);
       thin_to_target<3>(scene, run);
       return run;
     }
@@ -191,6 +246,7 @@ typename SpherePack<D>::Result SpherePack<D>::pack(const Scene& scene, const Pro
   if (scene.packer.method == "stacking") {
     stack<D>(scene, run);
     if (scene.densify) fill_scene_voids<D>(scene, run);
+    densify_by_least_squares<D>(scene, run);
     return run;
   }
   if (scene.densify && scene.densify->split) {  // the front packs the law's part above the split
@@ -202,6 +258,7 @@ typename SpherePack<D>::Result SpherePack<D>::pack(const Scene& scene, const Pro
   }
   const bool root = !exchange || exchange->process() == 0;  // the others hold no packing
   if (scene.densify && root) fill_scene_voids<D>(scene, run);
+  if (root) densify_by_least_squares<D>(scene, run);
   if (root) thin_to_target<D>(scene, run);
   return run;
 }
@@ -212,7 +269,9 @@ typename SpherePack<D>::Result SpherePack<D>::densify(const Scene& scene, Packin
   run.given = true;
   run.packing = std::move(packing);
   run.contact_tolerance = scene.packer.contact_tolerance;
-  fill_scene_voids<D>(scene, run);
+  run.solid_measure = solid_of(run.packing);
+  if (scene.densify || !scene.least_squares) fill_scene_voids<D>(scene, run);
+  densify_by_least_squares<D>(scene, run);
   thin_to_target<D>(scene, run);
   return run;
 }
@@ -222,6 +281,7 @@ std::string SpherePack<D>::stop_text(const Result& run) {
   std::string s = run.given ? "given" : run.tet_filled ? (run.tet_filled->reached_target ? to_string(run.stop) : "mesh filled")
                                                        : to_string(run.stop);
   if (run.densified) s += std::string("; void filling: ") + to_string(run.densified->stop);
+  if (run.squared) s += "; least squares";
   if (run.thinned) s += "; thinned to the target";
   if (run.stacked) s = run.stacked->unplaced ? "stacking: " + std::to_string(run.stacked->unplaced) + " found no place"
                                              : std::string("stacking: every particle placed");
@@ -301,6 +361,7 @@ PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth
                                          {"tet_removed_boundary", t->removed_boundary},
                                          {"tet_procedures", t->procedures}});
   }
+  if (const auto& q = res.squared) add_least_squares_lines(*q, container.measure(), scene.least_squares->radii, c);
   if (const auto& v = res.densified) {
     const double measure = container.measure();
     char line[320];

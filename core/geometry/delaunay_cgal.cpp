@@ -74,6 +74,37 @@ void sort_simplices(std::vector<std::array<std::uint32_t, N>>& simplices) {
   simplices = std::move(sorted);
 }
 
+/// Inserts points[from], ... into t, each vertex's info its index.
+template <int D>
+void insert_points(typename Cgal<D>::Triangulation& t, const std::vector<Vec<D>>& points, std::size_t from) {
+  using C = Cgal<D>;
+  using Item = std::pair<typename C::Point, std::uint32_t>;
+  std::vector<Item> input;
+  input.reserve(points.size() - std::min(from, points.size()));
+  for (std::size_t i = from; i < points.size(); ++i) input.emplace_back(C::point(points[i]), static_cast<std::uint32_t>(i));
+  // Inserted along a space-filling curve (each point near the last: fast location); a point
+  // given twice is one vertex, which keeps the smaller index whatever the order.
+  CGAL::spatial_sort(input.begin(), input.end(), typename C::Sort());
+  decltype(C::hint(typename C::Triangulation::Vertex_handle())) hint{};
+  for (const auto& [p, i] : input) {
+    const std::size_t before = t.number_of_vertices();
+    const auto v = t.insert(p, hint);
+    v->info() = t.number_of_vertices() > before ? i : std::min(v->info(), i);
+    hint = C::hint(v);
+  }
+}
+
+/// The two ends of each finite edge, the smaller index first.
+std::array<std::uint32_t, 2> ends(const Cgal<3>::Triangulation::Edge& e) {
+  const std::uint32_t a = e.first->vertex(e.second)->info(), b = e.first->vertex(e.third)->info();
+  return {std::min(a, b), std::max(a, b)};
+}
+std::array<std::uint32_t, 2> ends(const Cgal<2>::Triangulation::Edge& e) {
+  const std::uint32_t a = e.first->vertex(Cgal<2>::Triangulation::cw(e.second))->info(),
+                      b = e.first->vertex(Cgal<2>::Triangulation::ccw(e.second))->info();
+  return {std::min(a, b), std::max(a, b)};
+}
+
 }  // namespace
 
 template <int D>
@@ -91,20 +122,7 @@ std::vector<typename GrowingDelaunay<D>::Simplex> GrowingDelaunay<D>::insert(con
                                                                             std::size_t from) {
   using C = Cgal<D>;
   auto& t = impl_->t;
-  using Item = std::pair<typename C::Point, std::uint32_t>;
-  std::vector<Item> input;
-  input.reserve(points.size() - std::min(from, points.size()));
-  for (std::size_t i = from; i < points.size(); ++i) input.emplace_back(C::point(points[i]), static_cast<std::uint32_t>(i));
-  // Inserted along a space-filling curve (each point near the last: fast location); a point
-  // given twice is one vertex, which keeps the smaller index whatever the order.
-  CGAL::spatial_sort(input.begin(), input.end(), typename C::Sort());
-  decltype(C::hint(typename C::Triangulation::Vertex_handle())) hint{};
-  for (const auto& [p, i] : input) {
-    const std::size_t before = t.number_of_vertices();
-    const auto v = t.insert(p, hint);
-    v->info() = t.number_of_vertices() > before ? i : std::min(v->info(), i);
-    hint = C::hint(v);
-  }
+  insert_points<D>(t, points, from);
   std::vector<Simplex> made;
   if (t.dimension() < D) return made;
   for (const auto c : C::cells(t)) {
@@ -121,6 +139,20 @@ std::vector<typename GrowingDelaunay<D>::Simplex> GrowingDelaunay<D>::insert(con
 
 template class GrowingDelaunay<2>;
 template class GrowingDelaunay<3>;
+
+template <int D>
+std::vector<std::array<std::uint32_t, 2>> delaunay_edges(const std::vector<Vec<D>>& points) {
+  typename Cgal<D>::Triangulation t;
+  insert_points<D>(t, points, 0);
+  std::vector<std::array<std::uint32_t, 2>> edges;
+  if (t.dimension() < 1) return edges;
+  edges.reserve(t.number_of_vertices() * (D == 3 ? 8 : 3));
+  for (auto e = t.finite_edges_begin(); e != t.finite_edges_end(); ++e) edges.push_back(ends(*e));
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
+template std::vector<std::array<std::uint32_t, 2>> delaunay_edges<2>(const std::vector<Vec2>&);
+template std::vector<std::array<std::uint32_t, 2>> delaunay_edges<3>(const std::vector<Vec3>&);
 
 std::vector<std::array<std::uint32_t, 4>> delaunay_tetrahedra(const std::vector<Vec3>& points) {
   return GrowingDelaunay<3>().insert(points, 0);

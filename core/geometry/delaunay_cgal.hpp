@@ -35,6 +35,12 @@ class GrowingDelaunay {
   std::unique_ptr<Impl> impl_;
 };
 
+/// The finite edges of the Delaunay triangulation of `points` (its neighbours: paper 001's
+/// contact pairs), each as (i, j) with i < j, sorted. A point given twice is one vertex (the
+/// smaller index); the other has no edge.
+template <int D>
+std::vector<std::array<std::uint32_t, 2>> delaunay_edges(const std::vector<Vec<D>>& points);
+
 /// The finite cells of the Delaunay triangulation of `points` (one batch of GrowingDelaunay<3>).
 std::vector<std::array<std::uint32_t, 4>> delaunay_tetrahedra(const std::vector<Vec3>& points);
 

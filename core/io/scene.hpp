@@ -154,6 +154,32 @@ struct DensifyOptions {
   std::optional<std::uint64_t> max_particles;    ///< N0: stop once the packing holds this many
 };
 
+/// What least-squares densification may change besides the centres (densify/least_squares.hpp).
+enum class LeastSquaresRadii {
+  Fixed,  ///< the centres alone: contacts gained, the solid fraction kept
+  Range   ///< the paper's: each radius too, within the law's [r_min, r_max] (denser; the law drifts)
+};
+
+/// Least-squares densification (`least_squares:`, paper 001): after the packer and the void
+/// filling, the centres (and radii) minimise Eq. 4 over the edges of the Delaunay triangulation
+/// of the centres, then every overlap is removed without losing a particle.
+struct LeastSquaresOptions {
+  LeastSquaresRadii radii = LeastSquaresRadii::Range;
+  int evaluations = 200;       ///< of Eq. 4 and its gradient, at most (L-BFGS)
+  int relax_evaluations = 100; ///< of the penalised Eq. 4, per round of the overlap removal
+  bool boundary = true;      ///< Eqs. 3-4: particles near a wall drawn to touch it
+  /// Edges of the triangulation whose gap is above this times the smaller radius are left out;
+  /// 0: every edge (the paper's: the edges of its finite element mesh). Measured on a front
+  /// packing (experiments/labra-densification): every edge draws the hull's long edges and
+  /// the void's across; the solid fraction fell from 0.56 to 0.35; 0.5 raised it to 0.59.
+  double edge_gap = 0.5;
+  int relax_rounds = 8;      ///< overlap removal: rounds of Eq. 4 under a growing penalty on overlaps, at most
+  /// The stage's overlap allowance and contact tolerance, relative to the smaller radius (a
+  /// minimiser brings pairs into contact to about this, not to the packer's rounding); the
+  /// packing's tolerance is the larger of it and packer.contact_tolerance.
+  double tolerance = 1e-6;
+};
+
 /// A physical volume of a tetrahedral mesh with laws of its own (`regions:`, paper 000: "by
 /// defining different regions with different solid fractions it is thus possible to obtain a
 /// gradient of density").
@@ -235,6 +261,7 @@ struct Scene {
   PackerOptions packer;
   StopCriteria stop;
   std::optional<DensifyOptions> densify;  ///< void filling after the packer (spheres only)
+  std::optional<LeastSquaresOptions> least_squares;  ///< after the void filling (spheres only)
   /// `target:` the solid fraction the whole container is to have (given as solid_fraction,
   /// porosity n = 1 - phi or void ratio e = 1 / phi - 1): the packer packs to its own density,
   /// then particles spread over the whole container are removed down to it (densify/thinning.hpp);

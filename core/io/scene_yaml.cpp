@@ -788,6 +788,37 @@ void parse_densify(const Value& v, int dimension, bool shapes, const RadiusDistr
   }
 }
 
+/// `least_squares: {radii: fixed | range, evaluations: N, relax_evaluations: N, boundary: BOOL,
+/// edge_gap: G, relax_rounds: N, tolerance: T}`.
+void parse_least_squares(const Value& v, bool shapes, LeastSquaresOptions& o) {
+  if (shapes) v.fail("least-squares densification moves and grows spheres: it needs a scene of spheres (disks), not of shapes");
+  if (v.node().IsNull()) return;  // `least_squares:` alone: every default
+  const Map m = v.map();
+  m.check_known({"radii", "evaluations", "relax_evaluations", "boundary", "edge_gap", "relax_rounds", "tolerance"});
+  if (auto x = m.find("radii"))
+    o.radii = x->choice({"range", "fixed"}) == "fixed" ? LeastSquaresRadii::Fixed : LeastSquaresRadii::Range;
+  const auto count = [](const Value& x, std::uint64_t lo, std::uint64_t hi) {
+    const std::uint64_t k = x.unsigned_integer();
+    if (k < lo || k > hi)
+      x.fail("must be an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + " (got " + x.node().Scalar() + ")");
+    return static_cast<int>(k);
+  };
+  if (auto x = m.find("evaluations")) o.evaluations = count(*x, 1, 1000000);
+  if (auto x = m.find("relax_evaluations")) o.relax_evaluations = count(*x, 1, 1000000);
+  if (auto x = m.find("relax_rounds")) o.relax_rounds = count(*x, 0, 1000);
+  if (auto x = m.find("boundary")) o.boundary = x->boolean();
+  if (auto x = m.find("edge_gap")) {
+    const double g = x->number();
+    if (!(g >= 0 && std::isfinite(g))) x->fail("must be a number >= 0 (0: every edge; got " + x->node().Scalar() + ")");
+    o.edge_gap = g;
+  }
+  if (auto x = m.find("tolerance")) {
+    const double t = x->number();
+    if (!(t > 0 && t <= 0.01)) x->fail("must be a number in (0, 0.01] (got " + x->node().Scalar() + ")");
+    o.tolerance = t;
+  }
+}
+
 /// `regions: {NAME: {radius: LAW, volume_fraction: PHI0}, ...}`: physical volumes of the scene's
 /// tetrahedral mesh, by name or tag.
 void parse_regions(const Value& v, Scene& scene) {
@@ -1136,7 +1167,8 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
   try {
     const Map root(ctx, doc, "", doc.Mark().is_null() ? start : doc.Mark());
     root.check_known(
-        {"dimension", "seed", "container", "particles", "packer", "stop", "target", "densify", "regions", "output"});
+        {"dimension", "seed", "container", "particles", "packer", "stop", "target", "densify", "least_squares", "regions",
+         "output"});
     const Value dim = root.get("dimension", "2 or 3");
     const std::uint64_t d = dim.unsigned_integer();
     if (d != 2 && d != 3) dim.fail("must be 2 or 3 (got " + dim.node().Scalar() + ")");
@@ -1147,6 +1179,8 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
     if (auto s = root.find("stop")) parse_stop(*s, scene.stop, scene.spots);
     if (auto d = root.find("densify"))
       parse_densify(*d, scene.dimension, !scene.particle_templates.empty(), scene.radii, scene.densify.emplace());
+    if (auto l = root.find("least_squares"))
+      parse_least_squares(*l, !scene.particle_templates.empty(), scene.least_squares.emplace());
     if (auto r = root.find("regions")) parse_regions(*r, scene);
     if (auto t = root.find("target")) {
       if (scene.stop.target_volume_fraction)
