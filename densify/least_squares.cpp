@@ -318,7 +318,7 @@ struct OverlapRemoval {
     const auto to_local = [&] {
       for (std::size_t i = 0; i < n; ++i) {
         c[i] = frame.out(u[i]);
-        r[i] = rho[i] * frame.scale;
+        r[i] = range ? rho[i] * frame.scale : r0[i];  // Fixed: exactly the radii given
       }
     };
     to_local();
@@ -445,7 +445,7 @@ LeastSquaresReport densify_least_squares(Packing<D>& packing, const Container<D>
   std::vector<Edge> edges;
   for (const auto& [i, j] : delaunay_edges<D>(u)) {
     const double s = rho[i] + rho[j];
-    if (options.edge_gap > 0 && (u[i] - u[j]).norm() - s > options.edge_gap * std::min(rho[i], rho[j])) continue;
+    if (options.edge_gap > 0 && (u[i] - u[j]).norm() - s > options.edge_gap * s) continue;
     edges.push_back({i, j, 1 / (s * s * s * s)});
   }
   rep.triangulation_seconds = since(tt);
