@@ -195,13 +195,14 @@ void add_least_squares_lines(const LeastSquaresReport& q, double measure, LeastS
   std::snprintf(line, sizeof line,
                 "  least squares  radii %s; %zu edges, %zu wall terms; Eq. 4 %.4g -> %.4g in %d evaluations; volume fraction "
                 "%.4f -> %.4f (optimum %.4f, %zu overlaps there, up to %.3g); radii %zu grown, change mean %.4f max %.4f; "
-                "centres moved mean %.4f max %.4f radii; overlap removal: %d relax rounds, %d sweeps, %zu radii clipped "
-                "(up to %.2g), move kept %.4g; %.3f s\n",
+                "centres moved mean %.4f max %.4f radii; overlap removal: %d relax rounds, %zu radii clipped (up to %.2g), "
+                "%d sweeps, %zu grown into the room left, move kept %.4g%s; %.3f s\n",
                 radii == LeastSquaresRadii::Range ? "in the law's range" : "fixed", q.edges, q.boundary_terms,
                 q.objective_before, q.objective_after, q.evaluations, q.solid_before / measure, q.solid_after / measure,
                 q.solid_solved / measure, q.overlaps_solved, q.max_overlap_solved, q.radii_grown, q.mean_radius_change,
-                q.max_radius_change, q.mean_move, q.max_move, q.relax_rounds, q.sweeps, q.radii_clipped, q.max_clip,
-                q.kept_share, q.seconds);
+                q.max_radius_change, q.mean_move, q.max_move, q.relax_rounds, q.radii_clipped, q.max_clip, q.sweeps,
+                q.swelled, q.kept_share, q.less_dense ? " (the result was less dense: the packing given kept)" : "",
+                q.seconds);
   c.summary_lines += line;
   c.info.emplace_back("least_squares_radii", radii == LeastSquaresRadii::Range ? "range" : "fixed");
   c.metrics.insert(c.metrics.end(), {{"least_squares_volume_fraction_before", q.solid_before / measure},
@@ -227,7 +228,9 @@ void add_least_squares_lines(const LeastSquaresReport& q, double measure, LeastS
                                        {"least_squares_relax_evaluations", static_cast<std::uint64_t>(q.relax_evaluations)},
                                        {"least_squares_sweeps", static_cast<std::uint64_t>(q.sweeps)},
                                        {"least_squares_radii_clipped", q.radii_clipped},
-                                       {"least_squares_radii_grown", q.radii_grown}});
+                                       {"least_squares_radii_grown", q.radii_grown},
+                                       {"least_squares_swelled", q.swelled},
+                                       {"least_squares_less_dense", q.less_dense ? 1u : 0u}});
 }
 
 }  // namespace

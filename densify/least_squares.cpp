@@ -4,7 +4,7 @@
 #include <array>
 #include <chrono>
 #include <stdexcept>
-#include <cmath>
+#include <cmath>  // sincos: glibc
 #include <vector>
 
 
@@ -224,7 +224,7 @@ constexpr double kPenaltyStart = 10.0;
 constexpr double kPenaltyGrowth = 10.0;
 /// Step 3's sweeps at most.
 constexpr int kSweeps = 64;
-/// Step 4's bisections of the move (the share kept is then known to 2^-kBisections).
+/// Step 5's bisections of the move (the share kept is then known to 2^-kBisections).
 constexpr int kBisections = 6;
 
 /// Eq. 4's variables: the centres (D each), then the radii (Range only).
@@ -276,15 +276,24 @@ double minimise(std::vector<double>& x, const std::vector<double>* lower, const 
     half[k] = ((*upper)[k] - (*lower)[k]) / 2;
     x[k] = half[k] > 0 ? std::asin(std::clamp((x[k] - mid[k]) / half[k], -1.0, 1.0)) : 0.0;
   }
+  std::vector<double> cosine(m);
   const auto to_v = [&](const double* z) {
-    for (std::size_t k = 0; k < m; ++k) v[k] = bounded[k] ? mid[k] + half[k] * std::sin(z[k]) : z[k];
+    for (std::size_t k = 0; k < m; ++k) {
+      if (!bounded[k]) {
+        v[k] = z[k];
+        continue;
+      }
+      double sine;
+      ::sincos(z[k], &sine, &cosine[k]);
+      v[k] = mid[k] + half[k] * sine;
+    }
   };
   auto over_z = [&](const double* z, double* g) {
     to_v(z);
     const double value = f(v.data(), g);
     if (g)
       for (std::size_t k = 0; k < m; ++k)
-        if (bounded[k]) g[k] *= half[k] * std::cos(z[k]);
+        if (bounded[k]) g[k] *= half[k] * cosine[k];
     return value;
   };
   const double value = minimise_free(x, evaluations, stop_below, over_z);
@@ -293,14 +302,14 @@ double minimise(std::vector<double>& x, const std::vector<double>* lower, const 
   return value;
 }
 
-/// Steps 1-3 of the header on a packing in the unit frame (u, rho): the result in the local
+/// Steps 1-4 of the header on a packing in the unit frame (u, rho): the result in the local
 /// frame (c, r), and whether it is valid (no overlap beyond the tolerance, every ball inside).
 template <int D>
 struct OverlapRemoval {
   const Container<D>& container;
   const UnitFrame<D>& frame;
   const std::vector<double>& r0;  ///< the radii given
-  double r_min;
+  double r_min, r_max;
   bool range;
   int relax_rounds, relax_evaluations;
   double contact_tolerance;
@@ -308,7 +317,7 @@ struct OverlapRemoval {
   const std::vector<double>* lower;  ///< Eq. 4's bounds (null: none)
   const std::vector<double>* upper;
 
-  /// Fills rep's figures of steps 1-3.
+  /// Fills rep's figures of steps 1-4.
   bool run(std::vector<Vec<D>>& u, std::vector<double>& rho, std::vector<Vec<D>>& c, std::vector<double>& r,
            LeastSquaresReport& rep) const {
     const std::size_t n = u.size();
@@ -329,7 +338,7 @@ struct OverlapRemoval {
     for (int round = 0; round < relax_rounds && worst > contact_tolerance / 2; ++round) {
       penalised.pairs.clear();
       penalised.walls.clear();
-      near_pairs<D>(u, rho, 0.5, [&](std::uint32_t i, std::uint32_t j, double) {
+      near_pairs<D>(u, rho, 0.2, [&](std::uint32_t i, std::uint32_t j, double) {
         const double m = std::min(rho[i], rho[j]);
         penalised.pairs.push_back({i, j, 1 / (m * m)});
       });
@@ -361,7 +370,7 @@ struct OverlapRemoval {
     near_pairs<D>(c, r, 0.0, [&](std::uint32_t i, std::uint32_t j, double o) {
       if (o <= contact_tolerance / 2 * std::min(r[i], r[j])) return;
       const double si = r[i] - floor[i], sj = r[j] - floor[j];
-      if (!(si + sj > 0)) return;  // neither can give: step 4
+      if (!(si + sj > 0)) return;  // neither can give: steps 3 and 5
       clipped[i] = std::min(clipped[i], r[i] - o * si / (si + sj));
       clipped[j] = std::min(clipped[j], r[j] - o * sj / (si + sj));
     });
@@ -407,6 +416,28 @@ struct OverlapRemoval {
         }
         rep.sweeps += 1;
         if (worst <= contact_tolerance / 2) break;
+      }
+    }
+
+    // Step 4 (Range): each ball, in turn, grows into the room left around it, up to r_max:
+    // until it touches its nearest neighbour or a wall (the gaps Eq. 4 left: more solid, more
+    // contacts).
+    if (range) {
+      Aabb<D> box;
+      for (const Vec<D>& x : c) box.extend(x);
+      const auto [lo, hi] = std::minmax_element(r.begin(), r.end());
+      NeighbourGrid<D> grid(box, *lo, std::max(*hi, r_max));
+      for (std::size_t i = 0; i < n; ++i) grid.insert(static_cast<int>(i), c[i], r[i]);
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!(r[i] < r_max)) continue;
+        double room = std::min(r_max, -container.signed_distance(c[i]));
+        grid.for_each_near(c[i], r_max + r_max, [&](int k) {
+          if (static_cast<std::size_t>(k) != i) room = std::min(room, (c[k] - c[i]).norm() - r[k]);
+        });
+        if (room > r[i]) {
+          r[i] = room;
+          ++rep.swelled;
+        }
       }
     }
 
@@ -499,7 +530,7 @@ LeastSquaresReport densify_least_squares(Packing<D>& packing, const Container<D>
     rep.max_overlap_solved = std::max(rep.max_overlap_solved, o / std::min(r[i], r[j]));
   });
 
-  // Steps 1-3 on the whole move; step 4: the largest share t of it (by bisection, t = 0
+  // Steps 1-4 on the whole move; step 5: the largest share t of it (by bisection, t = 0
   // being the packing given) after which they leave a valid packing.
   std::vector<Vec<D>> u0(n);
   std::vector<double> rho0(n);
@@ -507,7 +538,7 @@ LeastSquaresReport densify_least_squares(Packing<D>& packing, const Container<D>
     u0[i] = frame.in(c0[i]);
     rho0[i] = r0[i] / frame.scale;
   }
-  const OverlapRemoval<D> removal{container, frame, r0, r_min, range, options.relax_rounds, options.relax_evaluations,
+  const OverlapRemoval<D> removal{container, frame, r0, r_min, r_max, range, options.relax_rounds, options.relax_evaluations,
                                   contact_tolerance, &eq4, range ? &lower : nullptr, range ? &upper : nullptr};
   std::vector<Vec<D>> ut(n), best_c = c0;
   std::vector<double> rhot(n), best_r = r0;
@@ -527,6 +558,7 @@ LeastSquaresReport densify_least_squares(Packing<D>& packing, const Container<D>
     rep.relax_evaluations = figures.relax_evaluations;
     rep.max_overlap_relaxed = figures.max_overlap_relaxed;
     rep.sweeps = figures.sweeps;
+    rep.swelled = figures.swelled;
     rep.radii_clipped = figures.radii_clipped;
     rep.max_clip = figures.max_clip;
     return true;
@@ -538,6 +570,12 @@ LeastSquaresReport densify_least_squares(Packing<D>& packing, const Container<D>
       const double mid = (lo + hi) / 2;
       (attempt(mid) ? lo : hi) = mid;
     }
+  }
+  if (range && solid_of<D>(best_r) < rep.solid_before) {  // a densifier that loses solid: the packing given
+    best_c = c0;
+    best_r = r0;
+    rep.kept_share = 0;
+    rep.less_dense = true;
   }
   packing.centers = std::move(best_c);
   packing.radii = std::move(best_r);

@@ -14,19 +14,21 @@
 // scaled by its mean radius, so that far-off and tiny scenes keep their digits.
 //
 // The least-squares optimum has overlaps (it weighs a gap and an overlap alike). They are then
-// removed without losing a particle, in four steps:
-//  1. rounds of minimisation over the centres alone of the overlaps squared (pairs and walls,
-//     one-sided), the radii held, until the largest overlap is below half kClipAllowance of the
-//     smaller radius or the rounds run out;
-//  2. sweeps of projections (radii held): each pair still overlapping is moved apart until it
-//     touches, the smaller ball moving more, each ball past a wall moved back to it; until no
-//     overlap is above half the contact tolerance (the pairs it moved now touch: contacts);
-//  3. what is left comes off the radii: each pair gives up its overlap from both radii in
+// removed without losing a particle:
+//  1. rounds of Eq. 4 plus a penalty on the overlaps squared (pairs and walls, one-sided), its
+//     weight ten times larger each round, until the largest overlap is below half the stage's
+//     tolerance (or the rounds run out): the pairs Eq. 4 draws together end in contact;
+//  2. what is left comes off the radii: each pair gives up its overlap from both radii in
 //     proportion to what each can give above its floor (Range: the law's r_min; Fixed: its own
 //     radius less kClipAllowance of it, never below r_min), each ball past a wall shrinks to it;
-//  4. if an overlap is still there (a floor was met), the packing is taken back along the
-//     straight path to the one given, by halves (t = 1/2, 1/4, ... of the move), down to the
-//     packing given itself (t = 0), which was valid: the largest t whose packing is valid is kept.
+//  3. sweeps of projections (radii held): each pair still overlapping is moved apart until it
+//     touches, the smaller ball moving more, each ball past a wall moved back to it;
+//  4. (Range) each ball in turn grows into the room left around it, up to r_max, until it
+//     touches a neighbour or a wall (not in the paper: it closes the gaps Eq. 4 left);
+//  5. if an overlap is still there (a floor was met), the move is taken back along the straight
+//     path to the packing given, by bisection of the share t kept (t = 0 is the packing given,
+//     which was valid): the largest t found whose packing is valid is kept.
+// With Range, a result with less solid than the packing given is not kept (less_dense).
 // Nothing is removed, and the packing returned has no overlap beyond the contact tolerance and
 // every ball inside (as the one given had).
 #include <cstddef>
@@ -38,7 +40,7 @@
 
 namespace fp {
 
-/// Step 1's aim and step 3's largest radius change in Fixed mode, relative to the radius.
+/// Step 2's largest radius change in Fixed mode, relative to the radius.
 inline constexpr double kClipAllowance = 1e-4;
 
 struct LeastSquaresReport {
@@ -56,10 +58,12 @@ struct LeastSquaresReport {
   int relax_rounds = 0;              ///< step 1's rounds
   int relax_evaluations = 0;         ///< step 1's evaluations, in all
   double max_overlap_relaxed = 0.0;  ///< after step 1, relative to the smaller radius (or the radius, walls)
-  int sweeps = 0;                    ///< step 2's sweeps
-  std::size_t radii_clipped = 0;     ///< step 3: radii reduced
-  double max_clip = 0.0;             ///< step 3: the largest reduction, relative to the radius
-  double kept_share = 1.0;           ///< step 4: t (1: the whole move kept; 0: the packing given)
+  int sweeps = 0;                    ///< step 3's sweeps
+  std::size_t swelled = 0;           ///< step 4 (Range): radii grown into the room left
+  std::size_t radii_clipped = 0;     ///< step 2: radii reduced
+  double max_clip = 0.0;             ///< step 2: the largest reduction, relative to the radius
+  double kept_share = 1.0;           ///< step 5: t
+  bool less_dense = false;           ///< Range: the result had less solid than the packing given, which is returned (1: the whole move kept; 0: the packing given)
   double mean_radius_change = 0.0;   ///< mean of |r_after - r_given| / r_given
   double max_radius_change = 0.0;    ///< largest of them
   std::size_t radii_grown = 0;       ///< radii above their given value

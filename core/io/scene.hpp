@@ -165,8 +165,8 @@ enum class LeastSquaresRadii {
 /// of the centres, then every overlap is removed without losing a particle.
 struct LeastSquaresOptions {
   LeastSquaresRadii radii = LeastSquaresRadii::Range;
-  int evaluations = 200;       ///< of Eq. 4 and its gradient, at most (L-BFGS)
-  int relax_evaluations = 100; ///< of the penalised Eq. 4, per round of the overlap removal
+  int evaluations = 100;       ///< of Eq. 4 and its gradient, at most (L-BFGS)
+  int relax_evaluations = 50;  ///< of the penalised Eq. 4, per round of the overlap removal
   bool boundary = true;      ///< Eqs. 3-4: particles near a wall drawn to touch it
   /// Edges of the triangulation whose gap is above this times r_i + r_j are left out; 0: every
   /// edge (the paper's: the edges of its finite element mesh). Measured (experiments/
