@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <utility>
 #include <stdexcept>
 #include <cmath>  // sincos: glibc
 #include <vector>
 
 
 #include "core/geometry/delaunay_cgal.hpp"
+#include "core/geometry/hilbert_curve.hpp"
 #include "core/geometry/neighbour_grid.hpp"
 #include "core/geometry/wall.hpp"
 #include "densify/lbfgs.hpp"
@@ -253,6 +255,7 @@ double minimise_free(std::vector<double>& x, int evaluations, double stop_below,
   LbfgsOptions o;
   o.evaluations = std::max(evaluations, 1);
   o.stop_below = stop_below;
+  o.memory = 4;  // as good as 6 or 10 here, and each pair costs a pass over two vectors of every unknown
   const LbfgsResult r = minimise_lbfgs(v, [&](const Eigen::VectorXd& at, Eigen::VectorXd& g) { return f(at.data(), g.data()); }, o);
   Eigen::Map<Eigen::VectorXd>(x.data(), v.size()) = v;
   return r.value;
@@ -445,11 +448,9 @@ struct OverlapRemoval {
   }
 };
 
-}  // namespace
-
 template <int D>
-LeastSquaresReport densify_least_squares(Packing<D>& packing, const Container<D>& container, double r_min,
-                                         double r_max, const LeastSquaresOptions& options, double contact_tolerance) {
+LeastSquaresReport densify_in_order(Packing<D>& packing, const Container<D>& container, double r_min, double r_max,
+                                    const LeastSquaresOptions& options, double contact_tolerance) {
   const auto t0 = Clock::now();
   LeastSquaresReport rep;
   const std::size_t n = packing.size();
@@ -591,6 +592,37 @@ LeastSquaresReport densify_least_squares(Packing<D>& packing, const Container<D>
   }
   rep.solid_after = solid_of<D>(packing.radii);
   rep.seconds = since(t0);
+  return rep;
+}
+
+}  // namespace
+
+/// The work is done with the particles in the order of a Hilbert curve through cells of the mean
+/// radius, so that neighbours are near in memory (a packing in the front's order of growth had
+/// neighbours ~10^4 entries apart at 10^6 spheres); the result goes back in the order given.
+template <int D>
+LeastSquaresReport densify_least_squares(Packing<D>& packing, const Container<D>& container, double r_min,
+                                         double r_max, const LeastSquaresOptions& options, double contact_tolerance) {
+  const std::size_t n = packing.size();
+  Aabb<D> box;
+  double mean = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    box.extend(packing.centers[i]);
+    mean += packing.radii[i] / static_cast<double>(n);
+  }
+  const double edge = n ? std::max(mean, box.size().maxCoeff() / double(1 << 20)) : 1.0;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
+  for (std::size_t i = 0; i < n; ++i) keyed[i] = {hilbert_key<D>(packing.centers[i], box.lo, edge), static_cast<std::uint32_t>(i)};
+  std::sort(keyed.begin(), keyed.end());
+  Packing<D> sorted;
+  sorted.origin = packing.origin;
+  sorted.reserve(n);
+  for (const auto& [key, i] : keyed) sorted.add(packing.centers[i], packing.radii[i]);
+  const LeastSquaresReport rep = densify_in_order<D>(sorted, container, r_min, r_max, options, contact_tolerance);
+  for (std::size_t k = 0; k < n; ++k) {
+    packing.centers[keyed[k].second] = sorted.centers[k];
+    packing.radii[keyed[k].second] = sorted.radii[k];
+  }
   return rep;
 }
 

@@ -28,6 +28,7 @@
 #include <span>
 #include <vector>
 
+#include "core/geometry/hilbert_curve.hpp"
 #include "core/geometry/vec.hpp"
 #include "core/sampling/rng.hpp"
 
@@ -55,41 +56,6 @@ struct ThinningInput {
   std::span<const std::uint32_t> wall_contacts;  ///< per particle: contacts with the container
   std::span<const std::uint64_t> place;      ///< per particle: its place along the walk (hilbert_key); empty: random
 };
-
-/// The index along a Hilbert curve of the cell of `edge` holding x, cells counted from `lo`, at
-/// most 2^21 per axis: a stretch of the curve is a compact region (a Morton order jumps across
-/// regions at every power of two, and a cell of the analysis then holds many short stretches).
-/// Skilling's transpose form (AIP Conf. Proc. 707, 381, 2004), any dimension.
-template <int D>
-std::uint64_t hilbert_key(const Vec<D>& x, const Vec<D>& lo, double edge) {
-  constexpr int kBits = 21;
-  std::uint32_t X[D];
-  for (int k = 0; k < D; ++k)
-    X[k] = static_cast<std::uint32_t>(std::clamp(std::floor((x[k] - lo[k]) / edge), 0.0, double((1u << kBits) - 1)));
-  // Axes to transpose: undo the excess work of the inverse, then Gray-encode.
-  for (std::uint32_t q = 1u << (kBits - 1); q > 1; q >>= 1) {
-    const std::uint32_t p = q - 1;
-    for (int i = 0; i < D; ++i) {
-      if (X[i] & q) {
-        X[0] ^= p;
-      } else {
-        const std::uint32_t t = (X[0] ^ X[i]) & p;
-        X[0] ^= t;
-        X[i] ^= t;
-      }
-    }
-  }
-  for (int i = 1; i < D; ++i) X[i] ^= X[i - 1];
-  std::uint32_t t = 0;
-  for (std::uint32_t q = 1u << (kBits - 1); q > 1; q >>= 1)
-    if (X[D - 1] & q) t ^= q - 1;
-  for (int i = 0; i < D; ++i) X[i] ^= t;
-  // The transposed bits, interleaved from the top.
-  std::uint64_t key = 0;
-  for (int b = kBits - 1; b >= 0; --b)
-    for (int i = 0; i < D; ++i) key = (key << 1) | ((X[i] >> b) & 1u);
-  return key;
-}
 
 /// Which particles to keep (1) so that the kept measure comes to `target_measure`; the report in
 /// `report`. Passes at contact levels D .. 0 (each repeated while it removes, up to 8 times), then
