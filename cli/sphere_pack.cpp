@@ -162,8 +162,19 @@ void stack(const Scene& scene, SphereRun<D>& run) {
   run.contact_tolerance = scene.packer.contact_tolerance;
   run.stacked = stack_graded<D>(container, std::move(radii), o, scene.seed ^ 0x57AC'4ED0'0000'0003ull, run.contact_tolerance,
                                 run.packing);
-  run.solid_measure = run.stacked->solid_placed;
-  run.seconds = run.stacked->seconds;
+  StackingReport& s = *run.stacked;
+  if (p.voids && !s.left_out.empty()) {  // (12): the Delaunay voids take what the steps could not place
+    DensifyOptions into;
+    into.list = s.left_out;
+    const VoidFillingReport v = fill_voids<D>(run.packing, container, *scene.radii, into, scene.seed, run.contact_tolerance);
+    s.by_voids = v.added;
+    s.placed += v.added;
+    s.unplaced -= v.added;
+    s.solid_placed = solid_of(run.packing);
+    s.seconds += v.seconds;
+  }
+  run.solid_measure = s.solid_placed;
+  run.seconds = s.seconds;
 }
 
 /// Each region's solid fraction (its spheres by their centres) against its phi0.
@@ -321,11 +332,12 @@ PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth
     char line[400];
     std::snprintf(line, sizeof line,
                   "  stacking       %llu asked (volume fraction %.4f), %llu placed: %llu random, %llu near, %llu two-contact, "
-                  "%llu three-contact; %llu reshape passes (%llu moved); %llu without a place; %.3f s\n",
+                  "%llu three-contact, %llu into voids; %llu reshape passes (%llu moved); %llu without a place; %.3f s\n",
                   static_cast<unsigned long long>(s->asked), s->solid_asked / container.measure(),
                   static_cast<unsigned long long>(s->placed), static_cast<unsigned long long>(s->by_random),
                   static_cast<unsigned long long>(s->by_near), static_cast<unsigned long long>(s->by_two_contact),
-                  static_cast<unsigned long long>(s->by_three_contact), static_cast<unsigned long long>(s->reshape_passes),
+                  static_cast<unsigned long long>(s->by_three_contact), static_cast<unsigned long long>(s->by_voids),
+                  static_cast<unsigned long long>(s->reshape_passes),
                   static_cast<unsigned long long>(s->reshape_moves), static_cast<unsigned long long>(s->unplaced), s->seconds);
     c.summary_lines += line;
     c.metrics.emplace_back("stacking_volume_fraction_asked", s->solid_asked / container.measure());
@@ -334,6 +346,7 @@ PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth
                                          {"stacking_near", s->by_near},
                                          {"stacking_two_contact", s->by_two_contact},
                                          {"stacking_three_contact", s->by_three_contact},
+                                         {"stacking_voids", s->by_voids},
                                          {"stacking_reshape_passes", s->reshape_passes},
                                          {"stacking_reshape_moves", s->reshape_moves},
                                          {"stacking_unplaced", s->unplaced}});

@@ -72,7 +72,10 @@ class VoidFiller {
       if (!region_ || region_->contains(P_.centers[i])) solid_ += ball_measure<D>(P_.radii[i]);
     rep_.before = P_.size();
     rep_.solid_before = solid_;
-    if (o_.radii == VoidRadii::Distribution) {
+    if (!o_.list.empty()) {
+      pool_ = o_.list;
+      std::sort(pool_.begin(), pool_.end(), std::greater<>());
+    } else if (o_.radii == VoidRadii::Distribution) {
       // Auto: the unplaced draws shift the radii's empirical CDF by at most pool / N, kept at
       // half of 1 / sqrt(N), a third of the K-S test's critical 1.36 / sqrt(N) at 5 %.
       const std::size_t pool = o_.radius_pool > 0 ? static_cast<std::size_t>(o_.radius_pool)
@@ -123,6 +126,7 @@ class VoidFiller {
   }
 
   void draw() {
+    if (!o_.list.empty()) return;  // the list's radii only
     const double r = dist_.sample(rng_);
     pool_.insert(std::upper_bound(pool_.begin(), pool_.end(), r, std::greater<>()), r);  // largest first
     ++rep_.radii_drawn;
@@ -134,7 +138,7 @@ class VoidFiller {
       rep_.stop = VoidFillingStop::VolumeFraction;
       return true;
     }
-    if (o_.max_particles && P_.size() >= *o_.max_particles) {
+    if ((o_.max_particles && P_.size() >= *o_.max_particles) || (!o_.list.empty() && pool_.empty())) {
       rep_.stop = VoidFillingStop::ParticleCount;
       return true;
     }

@@ -330,7 +330,10 @@ StackingReport stack_graded(const Container<D>& container, std::vector<double> r
       case 6: ++rep.by_near; break;
       case 7: ++rep.by_two_contact; break;
       case 8: ++rep.by_three_contact; break;
-      default: ++rep.unplaced; continue;
+      default:
+        ++rep.unplaced;
+        rep.left_out.push_back(r);
+        continue;
     }
     ++rep.placed;
     rep.solid_placed += ball_measure<D>(r);

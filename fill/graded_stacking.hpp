@@ -47,6 +47,8 @@ struct StackingReport {
   std::uint64_t reshape_passes = 0, reshape_moves = 0;
   double solid_asked = 0.0, solid_placed = 0.0;  ///< measures
   double seconds = 0.0;
+  std::vector<double> left_out;  ///< the radii without a place, largest first
+  std::uint64_t by_voids = 0;    ///< (12) of them placed afterwards into the voids (cli/sphere_pack.cpp)
 };
 
 /// Places `radii` (any order: sorted largest first here) in `container`; the placed spheres are

@@ -83,6 +83,9 @@ struct StackingParameters {
   int pairs_per_nucleus = 256; ///< (8) pairs of bodies that can both touch, tried around a nucleus
   int reshapes = 8;            ///< (11) reshape passes at most (0: none)
   bool contacts_first = false; ///< `order: contacts_first`: (8) first, then (7), (6), (5); `paper`: (5) .. (8)
+  /// (12) the particles left without a place go into the voids of the Delaunay triangulation of
+  /// the centres (densify/void_filling.hpp, the list mode), largest first.
+  bool voids = true;
 };
 
 struct PackerOptions {
@@ -152,6 +155,10 @@ struct DensifyOptions {
   std::optional<double> split;
   std::optional<double> target_volume_fraction;  ///< phi0: stop once the packing reaches it (checked after every sphere)
   std::optional<std::uint64_t> max_particles;    ///< N0: stop once the packing holds this many
+  /// Distribution, set by code (not a scene key): these radii and no others, largest first into
+  /// the voids, none drawn (the graded stacking's particles left without a place); stops when
+  /// every one is placed or no void takes one.
+  std::vector<double> list;
 };
 
 /// What least-squares densification may change besides the centres (densify/least_squares.hpp).

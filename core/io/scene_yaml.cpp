@@ -623,7 +623,7 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
   m.check_known({"method", "front", "candidate", "pair_order", "contact_bodies", "probe_smallest", "walls", "radius_pool", "contact_tolerance",
                  "grid_cell_factor", "hierarchical_grid_ratio", "seed_point", "minimisation", "contact_solver", "threads", "block_edge",
                  "overlap", "z_min", "loose", "fallback_r_min", "mesh_edge", "random_tries", "near_tries",
-                 "two_contact_tries", "nuclei", "pairs_per_nucleus", "reshapes", "order"});
+                 "two_contact_tries", "nuclei", "pairs_per_nucleus", "reshapes", "order", "voids"});
   if (auto x = m.find("contact_solver")) {
     if (!shapes)
       x->fail("used by particle templates only; this scene has spheres ('particles: {radius: ...}'), whose contacts are "
@@ -657,6 +657,10 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
   if (auto x = m.find("order")) {
     if (p.method != "stacking") x->fail("a parameter of the graded stacking: needs 'method: stacking'");
     p.stacking.contacts_first = x->choice({"paper", "contacts_first"}) == "contacts_first";
+  }
+  if (auto x = m.find("voids")) {
+    if (p.method != "stacking") x->fail("a parameter of the graded stacking: needs 'method: stacking'");
+    p.stacking.voids = x->boolean();
   }
   for (const char* key : {"overlap", "z_min", "loose", "fallback_r_min", "mesh_edge"})
     if (auto x = m.find(key); x && p.method != "tet_mesh")

@@ -45,6 +45,27 @@ TEST(CliStacking, DisksAndACount) {
   EXPECT_EQ(lines_of(read_bytes(dir.work() / "n.csv")).size(), 501u) << "a header and the 500 of the list";
 }
 
+/// (12): the particles the steps leave out go into the Delaunay voids; without it they stay out.
+TEST(CliStacking, TheVoidsTakeWhatTheStepsLeaveOut) {
+  TempDir dir;
+  const std::string scene =
+      "dimension: 2\nseed: 1\ncontainer: {type: rectangle, min: [0, 0], max: [20, 20]}\n"
+      "particles: {radius: {distribution: gradation, basis: mass, curve: [[0.2, 0], [0.4, 100]]}}\n"
+      "target: {solid_fraction: 0.80}\npacker: {method: stacking, order: contacts_first";
+  write_bytes(dir.work() / "on.yaml", scene + "}\n");
+  write_bytes(dir.work() / "off.yaml", scene + ", voids: false}\n");
+  ASSERT_EQ(run_frontpack(dir, "pack off.yaml -o off.csv -q --record off.json").exit_code, 0);
+  const RunResult r = run_frontpack(dir, "pack on.yaml -o on.csv --record on.json");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const std::string off = read_bytes(dir.work() / "off.json"), on = read_bytes(dir.work() / "on.json");
+  ASSERT_GT(record_number(off, "stacking_unplaced"), 0.0) << "the case needs particles left out";
+  EXPECT_EQ(record_number(off, "stacking_voids"), 0.0);
+  EXPECT_EQ(record_number(on, "stacking_voids"), record_number(off, "stacking_unplaced"));
+  EXPECT_EQ(record_number(on, "stacking_unplaced"), 0.0);
+  EXPECT_NE(r.out.find("its list placed in full"), std::string::npos) << r.out;
+  EXPECT_EQ(run_frontpack(dir, "validate on.csv --scene on.yaml").exit_code, 0);
+}
+
 TEST(CliStacking, BeyondTheLawsReachIsSaidAndFailsTheRadiiTest) {
   TempDir dir;
   write_bytes(dir.work() / "s.yaml", std::string(kBox3) + "packer: {method: stacking}\ntarget: {solid_fraction: 0.72}\n");
