@@ -99,7 +99,6 @@ inline std::set<std::string> listing(const fs::path& dir) {
   return names;
 }
 
-/// Splits text into lines (without the newline characters).
 /// The number after `"key": ` in a run record's text (its first occurrence); NaN when absent.
 inline double record_number(const std::string& record, const std::string& key) {
   const std::string quoted = "\"" + key + "\": ";
@@ -107,6 +106,17 @@ inline double record_number(const std::string& record, const std::string& key) {
   return at == std::string::npos ? std::nan("") : std::stod(record.substr(at + quoted.size()));
 }
 
+/// `frontpack pack bad.yaml -o out.csv` on `scene`: refused with exit 2, `message` on stderr,
+/// nothing written.
+inline void expect_refused(const TempDir& dir, const std::string& scene, const std::string& message) {
+  write_bytes(dir.work() / "bad.yaml", scene);
+  const RunResult r = run_frontpack(dir, "pack bad.yaml -o out.csv");
+  EXPECT_EQ(r.exit_code, 2) << scene;
+  EXPECT_NE(r.err.find(message), std::string::npos) << scene << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.work() / "out.csv")) << scene;
+}
+
+/// Splits text into lines (without the newline characters).
 inline std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
   std::istringstream in(text);

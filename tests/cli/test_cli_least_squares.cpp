@@ -67,13 +67,7 @@ TEST(CliLeastSquares, BadKeysAreRefusedAndWriteNothing) {
        "least_squares: {}\n",
        "needs a scene of spheres"},
   };
-  for (const auto& [scene, message] : cases) {
-    write_bytes(dir.work() / "bad.yaml", scene);
-    const RunResult r = run_frontpack(dir, "pack bad.yaml -o out.csv");
-    EXPECT_EQ(r.exit_code, 2) << scene;
-    EXPECT_NE(r.err.find(message), std::string::npos) << scene << r.err;
-    EXPECT_FALSE(fs::exists(dir.work() / "out.csv")) << scene;
-  }
+  for (const auto& [scene, message] : cases) expect_refused(dir, scene, message);
 }
 
 }  // namespace

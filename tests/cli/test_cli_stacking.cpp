@@ -86,13 +86,7 @@ TEST(CliStacking, BadKeysAreRefusedAndWriteNothing) {
        "packer: {method: stacking}\ntarget: {solid_fraction: 0.4}\n",
        "packs spheres"},
   };
-  for (const auto& [scene, message] : cases) {
-    write_bytes(dir.work() / "bad.yaml", scene);
-    const RunResult r = run_frontpack(dir, "pack bad.yaml -o out.csv");
-    EXPECT_EQ(r.exit_code, 2) << scene;
-    EXPECT_NE(r.err.find(message), std::string::npos) << scene << r.err;
-    EXPECT_FALSE(fs::exists(dir.work() / "out.csv")) << scene;
-  }
+  for (const auto& [scene, message] : cases) expect_refused(dir, scene, message);
 }
 
 }  // namespace
