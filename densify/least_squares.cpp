@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>  // and glibc's sincos
 #include <utility>
-#include <stdexcept>
-#include <cmath>  // sincos: glibc
 #include <vector>
-
 
 #include "core/geometry/delaunay_cgal.hpp"
 #include "core/geometry/hilbert_curve.hpp"
@@ -429,12 +427,13 @@ struct OverlapRemoval {
       Aabb<D> box;
       for (const Vec<D>& x : c) box.extend(x);
       const auto [lo, hi] = std::minmax_element(r.begin(), r.end());
-      NeighbourGrid<D> grid(box, *lo, std::max(*hi, r_max));
+      const double largest = std::max(*hi, r_max);  // any radius, now or grown
+      NeighbourGrid<D> grid(box, *lo, largest);
       for (std::size_t i = 0; i < n; ++i) grid.insert(static_cast<int>(i), c[i], r[i]);
       for (std::size_t i = 0; i < n; ++i) {
         if (!(r[i] < r_max)) continue;
         double room = std::min(r_max, -container.signed_distance(c[i]));
-        grid.for_each_near(c[i], r_max + r_max, [&](int k) {
+        grid.for_each_near(c[i], r_max + largest, [&](int k) {  // the grid holds the radii before growth: a superset
           if (static_cast<std::size_t>(k) != i) room = std::min(room, (c[k] - c[i]).norm() - r[k]);
         });
         if (room > r[i]) {
