@@ -158,7 +158,7 @@ void stack(const Scene& scene, SphereRun<D>& run) {
   }
   const StackingParameters& p = scene.packer.stacking;
   const StackingOptions o{p.random_tries,      p.near_tries, p.two_contact_tries, p.nuclei,
-                          p.pairs_per_nucleus, p.reshapes,   p.contacts_first};
+                          p.pairs_per_nucleus, p.reshapes,   p.contacts_first,    p.random_share};
   run.contact_tolerance = scene.packer.contact_tolerance;
   run.stacked = stack_graded<D>(container, std::move(radii), o, scene.seed ^ 0x57AC'4ED0'0000'0003ull, run.contact_tolerance,
                                 run.packing);

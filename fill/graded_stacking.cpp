@@ -31,8 +31,8 @@ class Stacker {
   }
 
   /// Places one sphere of radius r; which step placed it, or 0 if none did. The paper's order
-  /// (5), (6), (7), (8); with contacts_first (8), (7), (6), (5).
-  int place(double r) {
+  /// (5), (6), (7), (8); with `contacts` (8), (7), (6), (5).
+  int place(double r, bool contacts) {
     if (r < reopen_below_) reopen(r);
     if (P_.size() == 0) {  // the first particle: at random, else where the container is deepest
       Vec<D> x;
@@ -40,7 +40,7 @@ class Stacker {
       return 0;
     }
     Vec<D> x;
-    if (o_.contacts_first) {
+    if (contacts) {
       if (three_contact_any(r, x)) return add(x, r, D == 3 ? 8 : 7, false);
       for (int t = 0; t < o_.two_contact_tries; ++t)
         if (two_contact_random(nucleus_any(), r, x)) return add(x, r, 7, D == 3);
@@ -318,12 +318,15 @@ StackingReport stack_graded(const Container<D>& container, std::vector<double> r
   double r_min = radii.back(), r_max = radii.front();
   for (const double r : out.radii) r_min = std::min(r_min, r), r_max = std::max(r_max, r);
   Stacker<D> s(container, r_min, r_max, options, seed, tol, out);
+  double solid_seen = 0.0;
   for (const double r : radii) {
-    int step = s.place(r);
+    const bool contacts = options.contacts_first && solid_seen >= options.random_share * rep.solid_asked;
+    solid_seen += ball_measure<D>(r);
+    int step = s.place(r, contacts);
     if (step == 0 && rep.reshape_passes < static_cast<std::uint64_t>(options.reshapes)) {
       ++rep.reshape_passes;
       rep.reshape_moves += s.reshape();
-      step = s.place(r);
+      step = s.place(r, contacts);
     }
     switch (step) {
       case 5: ++rep.by_random; break;

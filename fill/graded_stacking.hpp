@@ -39,6 +39,11 @@ struct StackingOptions {
   /// Try (8) first, then (7), (6), (5): growth in contact from random nuclei everywhere rather
   /// than random positions first (measured denser; not the paper's order).
   bool contacts_first = false;
+  /// With contacts_first: the particles making the first `random_share` of the list's solid
+  /// (the largest) are placed in the paper's order, spread over the container as nuclei, the
+  /// rest contacts first (0: contacts first from the start, whose growth from one nucleus can
+  /// use the list up before it reaches every part of the container).
+  double random_share = 0.0;
 };
 
 struct StackingReport {

@@ -83,6 +83,7 @@ struct StackingParameters {
   int pairs_per_nucleus = 256; ///< (8) pairs of bodies that can both touch, tried around a nucleus
   int reshapes = 8;            ///< (11) reshape passes at most (0: none)
   bool contacts_first = false; ///< `order: contacts_first`: (8) first, then (7), (6), (5); `paper`: (5) .. (8)
+  double random_share = 0.0;   ///< contacts_first: the first share of the list's solid in the paper's order
   /// (12) the particles left without a place go into the voids of the Delaunay triangulation of
   /// the centres (densify/void_filling.hpp, the list mode), largest first.
   bool voids = true;

@@ -623,7 +623,8 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
   m.check_known({"method", "front", "candidate", "pair_order", "contact_bodies", "probe_smallest", "walls", "radius_pool", "contact_tolerance",
                  "grid_cell_factor", "hierarchical_grid_ratio", "seed_point", "minimisation", "contact_solver", "threads", "block_edge",
                  "overlap", "z_min", "loose", "fallback_r_min", "mesh_edge", "random_tries", "near_tries",
-                 "two_contact_tries", "nuclei", "pairs_per_nucleus", "reshapes", "order", "voids"});
+                 "two_contact_tries", "nuclei", "pairs_per_nucleus", "reshapes", "order", "voids",
+                 "random_share"});
   if (auto x = m.find("contact_solver")) {
     if (!shapes)
       x->fail("used by particle templates only; this scene has spheres ('particles: {radius: ...}'), whose contacts are "
@@ -657,6 +658,13 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
   if (auto x = m.find("order")) {
     if (p.method != "stacking") x->fail("a parameter of the graded stacking: needs 'method: stacking'");
     p.stacking.contacts_first = x->choice({"paper", "contacts_first"}) == "contacts_first";
+  }
+  if (auto x = m.find("random_share")) {
+    if (p.method != "stacking" || !p.stacking.contacts_first)
+      x->fail("the share of the list placed in the paper's order before contacts first: needs 'method: stacking, order: contacts_first'");
+    const double share = x->number();
+    if (!(share >= 0 && share <= 1)) x->fail("must be a number from 0 to 1 (got " + x->node().Scalar() + ")");
+    p.stacking.random_share = share;
   }
   if (auto x = m.find("voids")) {
     if (p.method != "stacking") x->fail("a parameter of the graded stacking: needs 'method: stacking'");
