@@ -201,5 +201,39 @@ TEST(LeastSquares, WhenTheOverlapsCannotBeRemovedTheMoveIsTakenBack) {
   expect_sound<3>(P, n, box_distance<3>(Vec3(0, 0, 0), Vec3(0.6, 0.6, 0.6)), 0.024, 0.024, "taken back");
 }
 
+/// r_max / r_min = 1000: a loose lattice of spheres of 1 with a sphere of 0.001 in each of its
+/// cells; and a box one particle thick. Both stay sound and gain solid.
+TEST(LeastSquares, ExtremeRadiusRatioAndAOneParticleThickBox) {
+  {
+    Packing<3> P;
+    const int k = 4;
+    for (int a = 0; a < k; ++a)
+      for (int b = 0; b < k; ++b)
+        for (int c = 0; c < k; ++c) {
+          P.add(Vec3(1.1 + 2.2 * a, 1.1 + 2.2 * b, 1.1 + 2.2 * c), 0.9);
+          if (a + 1 < k && b + 1 < k && c + 1 < k) P.add(Vec3(2.2 + 2.2 * a, 2.2 + 2.2 * b, 2.2 + 2.2 * c), 0.001);
+        }
+    const double edge = 2.2 * k;
+    const fp::Scene scene = scene_from_yaml(scene_text(3, box(0, edge), 0.001, 1.0));
+    const std::size_t n = P.size();
+    const double before = volume_fraction<3>(P, edge * edge * edge);
+    fp::densify_least_squares<3>(P, *scene.container3, 0.001, 1.0, LeastSquaresOptions{}, kTol);
+    expect_sound<3>(P, n, box_distance<3>(Vec3(0, 0, 0), Vec3(edge, edge, edge)), 0.001, 1.0, "R = 1000");
+    EXPECT_GT(volume_fraction<3>(P, edge * edge * edge), before);
+  }
+  {
+    const std::string thin = "{type: box, min: [0, 0, 0], max: [6, 6, 0.4]}";
+    const fp::Scene big = scene_from_yaml(scene_text(3, thin, 0.125, 0.1875));
+    const fp::Scene scene = scene_from_yaml(scene_text(3, thin, 0.1, 0.15));
+    Packing<3> P = loose<3>(big);
+    const std::size_t n = P.size();
+    ASSERT_GT(n, 100u);
+    const double before = volume_fraction<3>(P, 6 * 6 * 0.4);
+    fp::densify_least_squares<3>(P, *scene.container3, 0.1, 0.15, LeastSquaresOptions{}, kTol);
+    expect_sound<3>(P, n, box_distance<3>(Vec3(0, 0, 0), Vec3(6, 6, 0.4)), 0.1, 0.15, "one particle thick");
+    EXPECT_GT(volume_fraction<3>(P, 6 * 6 * 0.4), before + 0.02);
+  }
+}
+
 }  // namespace
 }  // namespace fptest
