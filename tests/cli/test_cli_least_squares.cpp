@@ -54,6 +54,23 @@ TEST(CliLeastSquares, OnAGivenPackingAloneWithFixedRadii) {
   EXPECT_EQ(run_frontpack(dir, "validate f.csv --scene f.yaml").exit_code, 0);
 }
 
+/// A mesh container (its facets are the walls of Eq. 3 and of the overlap removal): sound, denser.
+TEST(CliLeastSquares, InAMeshContainer) {
+  TempDir dir;
+  write_bytes(dir.work() / "m.yaml", "dimension: 3\nseed: 1\ncontainer: {type: mesh, file: " +
+                                         source_path("tests/data/meshes/octahedron_binary.stl") +
+                                         "}\nparticles: {radius: {distribution: uniform, min: 0.03, max: 0.06}}\n"
+                                         "least_squares: {}\n");
+  const RunResult r = run_frontpack(dir, "pack m.yaml -o m.csv -q --record rec.json");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const std::string rec = read_bytes(dir.work() / "rec.json");
+  EXPECT_GT(record_number(rec, "least_squares_volume_fraction_after"),
+            record_number(rec, "least_squares_volume_fraction_before") + 0.01);
+  EXPECT_GT(record_number(rec, "least_squares_wall_terms"), 100.0);
+  const RunResult v = run_frontpack(dir, "validate m.csv --scene m.yaml");
+  EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
+}
+
 TEST(CliLeastSquares, BadKeysAreRefusedAndWriteNothing) {
   TempDir dir;
   const std::pair<std::string, const char*> cases[] = {
