@@ -92,27 +92,38 @@ struct LeastSquaresObjective {
   std::size_t n;
   int evaluations = 0;
 
+  const double* radii(const double* v) const { return fixed_rho ? fixed_rho->data() : v + D * n; }
+  std::size_t variables() const { return D * n + (fixed_rho ? 0 : n); }
+
   double operator()(const double* v, double* g) {
     ++evaluations;
-    const double* rho = fixed_rho ? fixed_rho->data() : v + D * n;
-    const std::size_t nv = D * n + (fixed_rho ? 0 : n);
-    if (g) std::fill(g, g + nv, 0.0);
+    if (g) std::fill(g, g + variables(), 0.0);
+    const double* rho = radii(v);
     double f = 0;
     for (const Edge& e : *edges) {
-      const Eigen::Map<const Vec<D>> ui(v + D * e.i), uj(v + D * e.j);
-      const Vec<D> delta = ui - uj;
+      const Vec<D> delta = Eigen::Map<const Vec<D>>(v + D * e.i) - Eigen::Map<const Vec<D>>(v + D * e.j);
       const double s = rho[e.i] + rho[e.j];
       const double d = delta.squaredNorm() - s * s;  // Eq. 1
       f += e.weight * d * d;
-      if (!g) continue;
-      const double k = 4 * e.weight * d;
-      Eigen::Map<Vec<D>>(g + D * e.i) += k * delta;
-      Eigen::Map<Vec<D>>(g + D * e.j) -= k * delta;
-      if (!fixed_rho) {
-        g[D * n + e.i] -= k * s;
-        g[D * n + e.j] -= k * s;
-      }
+      if (g) scatter(g, e.i, e.j, 4 * e.weight * d, delta, -4 * e.weight * d * s);
     }
+    return f + boundary_part(v, g);
+  }
+
+  /// g_i += k delta, g_j -= k delta; with Range, both radii's += kr.
+  void scatter(double* g, std::uint32_t i, std::uint32_t j, double k, const Vec<D>& delta, double kr) const {
+    Eigen::Map<Vec<D>>(g + D * i) += k * delta;
+    Eigen::Map<Vec<D>>(g + D * j) -= k * delta;
+    if (!fixed_rho) {
+      g[D * n + i] += kr;
+      g[D * n + j] += kr;
+    }
+  }
+
+  /// Eq. 4's wall terms (Eq. 3, signed), added to g.
+  double boundary_part(const double* v, double* g) const {
+    const double* rho = radii(v);
+    double f = 0;
     for (const BoundaryTerm<D>& b : *boundary) {
       const Eigen::Map<const Vec<D>> u(v + D * b.i);
       const double h = b.wall.gap(Vec<D>(u), 0.0);
@@ -127,37 +138,70 @@ struct LeastSquaresObjective {
   }
 };
 
+/// A pair in the penalised objective: an edge of Eq. 4, a pair near enough to overlap, or both.
+struct PairTerm {
+  std::uint32_t i, j;
+  double eq4;      ///< Eq. 4's weight (0: not an edge)
+  double penalty;  ///< 1 / min(rho)^2 (0: too far apart to overlap in this round)
+};
+
 /// Eq. 4 plus mu times the overlaps squared (pairs relative to the smaller radius of the round's
 /// start, walls to the radius), one-sided: step 1's objective, over Eq. 4's variables. Its
-/// minimum keeps the pairs Eq. 4 draws together in contact (overlapping by about 1 / mu).
+/// minimum keeps the pairs Eq. 4 draws together in contact (overlapping by about 1 / mu). Each
+/// pair is read once for both terms, its square root taken only when it overlaps.
 template <int D>
 struct PenaltyObjective {
   LeastSquaresObjective<D>* eq4;
   double mu = 1.0;
-  std::vector<Edge> pairs;             ///< weight 1 / min(rho)^2
+  std::vector<PairTerm> pairs;         ///< the edges of Eq. 4 and the near pairs, by (i, j)
   std::vector<BoundaryTerm<D>> walls;  ///< weight 1 / rho^2
 
-  double operator()(const double* v, double* g) {
-    double f = (*eq4)(v, g);
-    const std::size_t n = eq4->n;
-    const bool range = !eq4->fixed_rho;
-    const double* rho = range ? v + D * n : eq4->fixed_rho->data();
-    for (const Edge& e : pairs) {
-      const Vec<D> delta = Eigen::Map<const Vec<D>>(v + D * e.i) - Eigen::Map<const Vec<D>>(v + D * e.j);
-      const double dist = delta.norm();
-      const double o = rho[e.i] + rho[e.j] - dist;
-      if (o <= 0) continue;
-      f += mu * e.weight * o * o;
-      if (!g || !(dist > 0)) continue;
-      const double k = 2 * mu * e.weight * o;
-      const Vec<D> push = (k / dist) * delta;
-      Eigen::Map<Vec<D>>(g + D * e.i) -= push;
-      Eigen::Map<Vec<D>>(g + D * e.j) += push;
-      if (range) {
-        g[D * n + e.i] += k;
-        g[D * n + e.j] += k;
-      }
+  /// The round's terms: Eq. 4's edges (sorted) merged with `near` (pairs i < j, any order).
+  void set_pairs(std::vector<Edge>& near) {
+    std::sort(near.begin(), near.end(), [](const Edge& a, const Edge& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
+    pairs.clear();
+    const std::vector<Edge>& edges = *eq4->edges;
+    std::size_t a = 0, b = 0;
+    while (a < edges.size() || b < near.size()) {
+      const bool take_a = b == near.size() ||
+                          (a < edges.size() && (edges[a].i != near[b].i ? edges[a].i < near[b].i : edges[a].j <= near[b].j));
+      const bool take_b = a == edges.size() ||
+                          (b < near.size() && (near[b].i != edges[a].i ? near[b].i < edges[a].i : near[b].j <= edges[a].j));
+      const Edge& e = take_a ? edges[a] : near[b];
+      pairs.push_back({e.i, e.j, take_a ? edges[a].weight : 0.0, take_b ? near[b].weight : 0.0});
+      a += take_a;
+      b += take_b;
     }
+  }
+
+  double operator()(const double* v, double* g) {
+    ++eq4->evaluations;
+    if (g) std::fill(g, g + eq4->variables(), 0.0);
+    const double* rho = eq4->radii(v);
+    const bool range = !eq4->fixed_rho;
+    double f = 0;
+    for (const PairTerm& t : pairs) {
+      const Vec<D> delta = Eigen::Map<const Vec<D>>(v + D * t.i) - Eigen::Map<const Vec<D>>(v + D * t.j);
+      const double d2 = delta.squaredNorm();
+      const double s = rho[t.i] + rho[t.j];
+      double k = 0, kr = 0;  // the gradient: k delta on i, -k delta on j, kr on both radii
+      if (t.eq4 > 0) {
+        const double d = d2 - s * s;  // Eq. 1
+        f += t.eq4 * d * d;
+        k = 4 * t.eq4 * d;
+        kr = -k * s;
+      }
+      if (t.penalty > 0 && d2 < s * s) {
+        const double dist = std::sqrt(d2);
+        const double o = s - dist;
+        f += mu * t.penalty * o * o;
+        const double kp = 2 * mu * t.penalty * o;
+        if (dist > 0) k -= kp / dist;
+        kr += kp;
+      }
+      if (g && (k != 0 || kr != 0)) eq4->scatter(g, t.i, t.j, k, delta, kr);
+    }
+    f += eq4->boundary_part(v, g);
     for (const BoundaryTerm<D>& b : walls) {
       const Eigen::Map<const Vec<D>> u(v + D * b.i);
       const double o = -b.wall.gap(Vec<D>(u), rho[b.i]);
@@ -166,7 +210,7 @@ struct PenaltyObjective {
       if (!g) continue;
       const double k = 2 * mu * b.weight * o;
       Eigen::Map<Vec<D>>(g + D * b.i) -= k * gap_gradient(b.wall, Vec<D>(u));
-      if (range) g[D * n + b.i] += k;
+      if (range) g[D * eq4->n + b.i] += k;
     }
     return f;
   }
@@ -337,12 +381,13 @@ struct OverlapRemoval {
     std::vector<double> x(D * n + (range ? n : 0));
     PenaltyObjective<D> penalised{eq4, kPenaltyStart, {}, {}};
     for (int round = 0; round < relax_rounds && worst > contact_tolerance / 2; ++round) {
-      penalised.pairs.clear();
       penalised.walls.clear();
+      std::vector<Edge> close;
       near_pairs<D>(u, rho, 0.2, [&](std::uint32_t i, std::uint32_t j, double) {
         const double m = std::min(rho[i], rho[j]);
-        penalised.pairs.push_back({i, j, 1 / (m * m)});
+        close.push_back({i, j, 1 / (m * m)});
       });
+      penalised.set_pairs(close);
       for (std::size_t i = 0; i < n; ++i) {
         near.clear();
         walls_of<D>(container, c[i], r[i], 0.5 * r[i], r[i], true, scratch, near);
