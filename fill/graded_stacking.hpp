@@ -34,7 +34,7 @@ struct StackingOptions {
   int near_tries = 2;          ///< (6) random positions near a nucleus
   int two_contact_tries = 4;   ///< (7) random positions touching a nucleus and a neighbour
   int nuclei = 32;             ///< (8) nuclei scanned for three-contact positions, per particle
-  int pairs_per_nucleus = 256; ///< (8) pairs of bodies that can both touch, tried around one nucleus, nearest first
+  int pairs_per_nucleus = 64;  ///< (8) pairs of bodies that can both touch, tried around one nucleus, nearest first
   int reshapes = 8;            ///< (11) reshape passes at most over the run (0: none)
   /// Try (8) first, then (7), (6), (5): growth in contact from random nuclei everywhere rather
   /// than random positions first (measured denser; not the paper's order).
