@@ -57,23 +57,24 @@ class Stacker {
   }
 
   /// (11): every loose particle moved to the position touching three of its neighbours (two in
-  /// 2D) nearest to where it is. Returns the number moved.
-  std::uint64_t reshape() {
-    std::uint64_t moved = 0;
+  /// 2D) nearest to where it is. Returns the number moved. `r`: the radius that found no place
+  /// (the largest still to come).
+  std::uint64_t reshape(double r) {
+    std::vector<std::pair<Vec<D>, double>> vacated;
     for (std::size_t i = 0; i < P_.size(); ++i) {
       if (!loose_[i]) continue;
       const int id = static_cast<int>(i);
       Vec<D> x;
       grid_.erase(id);
       if (resettle(id, x)) {
+        vacated.push_back({P_.centers[i], P_.radii[i]});
         P_.centers[i] = x;
         loose_[i] = 0;
-        ++moved;
       }
       grid_.insert(id, P_.centers[i], P_.radii[i]);
     }
-    reopen(0.0);  // every ball may have room again
-    return moved;
+    reopen_around(vacated, r);
+    return vacated.size();
   }
 
  private:
@@ -145,7 +146,7 @@ class Stacker {
   /// surface first) and the container's walls within reach.
   void gather(int b, double r) {
     const Vec<D>& c = P_.centers[b];
-    const double rb = P_.radii[b], reach = rb + 2 * r;
+    const double rb = P_.radii[b], reach = rb + 2 * r * (1 + 1e-6);  // a margin over the solver's rounding: see acceptable()
     near_.clear();
     grid_.for_each_within(c, reach, [&](int id, const Vec<D>&, double rk, double d2) {
       if (id != b) near_.push_back({std::sqrt(d2) - rk, id});
@@ -183,10 +184,19 @@ class Stacker {
 
   /// A position the solver gave for `fixed` that can be taken: over the face of every wall among
   /// them (a facet is solved as its whole plane), inside, overlapping nothing.
-  bool acceptable(const std::array<Body<D>, D>& fixed, const Vec<D>& y, double r) const {
+  /// `gathered`: y touches the nucleus of the last gather(b, r), whose list then holds every
+  /// ball y can overlap (within r_b + 2 r of b's centre); they are checked nearest first and the
+  /// first overlap ends the check (most positions tried around a full nucleus overlap its
+  /// nearest neighbours), rather than by a query of the grid.
+  bool acceptable(const std::array<Body<D>, D>& fixed, const Vec<D>& y, double r, bool gathered) const {
     for (const Body<D>& b : fixed)
       if (b.is_wall() && !b.wall->over_face(y, 2 * std::sqrt(2 * tol_) * r)) return false;
-    return fits(y, r);
+    if (!gathered) return fits(y, r);
+    for (const auto& [gap, id] : near_) {
+      const double rk = P_.radii[id], lim = r + rk - tol_ * std::min(r, rk);
+      if ((P_.centers[id] - y).squaredNorm() < lim * lim) return false;
+    }
+    return C_.contains_ball(y, r, tol_);
   }
 
   /// (8): the first position touching b and D - 1 bodies around it (pairs nearest first) that
@@ -200,7 +210,7 @@ class Stacker {
     int tried = 0;
     auto consider = [&](int m) {
       for (int q = 0; q < m; ++q)
-        if (acceptable(fixed, out[q].position, r)) {
+        if (acceptable(fixed, out[q].position, r, true)) {
           x = out[q].position;
           return true;
         }
@@ -215,9 +225,10 @@ class Stacker {
       for (int j = 1; j < n && tried < o_.pairs_per_nucleus; ++j)
         for (int i = 0; i < j && tried < o_.pairs_per_nucleus; ++i) {
           // Two particles farther apart than a diameter of the new one cannot both touch it.
-          if (!bodies_[i].is_wall() && !bodies_[j].is_wall() &&
-              (bodies_[i].center - bodies_[j].center).norm() > bodies_[i].radius + bodies_[j].radius + 2 * r)
-            continue;
+          if (!bodies_[i].is_wall() && !bodies_[j].is_wall()) {
+            const double reach = bodies_[i].radius + bodies_[j].radius + 2 * r;
+            if ((bodies_[i].center - bodies_[j].center).squaredNorm() > reach * reach) continue;
+          }
           ++tried;
           fixed[1] = bodies_[i];
           fixed[2] = bodies_[j];
@@ -250,7 +261,7 @@ class Stacker {
       for (int q = 0; q < m; ++q) {
         const Vec<D>& y = out[q].position;
         const double key = (y - c).squaredNorm();
-        if (key < best && acceptable(fixed, y, r)) x = y, best = key, found = true;
+        if (key < best && acceptable(fixed, y, r, false)) x = y, best = key, found = true;
       }
     };
     if constexpr (D == 2) {
@@ -268,6 +279,25 @@ class Stacker {
           }
     }
     return found;
+  }
+
+  /// The closed balls that a ball of radius up to r touching them could now reach a vacated place
+  /// from (its centre within r_b + 2 r + r_i of the place) come back as nuclei: reopening every
+  /// ball after a reshape that moved a few made each fail again, 8 passes x N failures (3D R = 2,
+  /// 28,734 spheres: 62,384 failed nuclei).
+  void reopen_around(const std::vector<std::pair<Vec<D>, double>>& vacated, double r) {
+    if (vacated.empty()) return;
+    std::vector<char> near(P_.size(), 0);
+    for (const auto& [c, ri] : vacated)
+      grid_.for_each_within(c, ri + 2 * r, [&](int id, const Vec<D>&, double, double) { near[id] = 1; });
+    std::vector<std::pair<double, int>> still;
+    for (const auto& [failed, id] : closed_)
+      if (near[id]) {
+        if (!in_open_[id]) open_.push_back(id), in_open_[id] = 1;
+      } else {
+        still.push_back({failed, id});
+      }
+    closed_ = std::move(still);
   }
 
   /// Balls closed for radii at least kReopen of the present one come back as nuclei.
@@ -325,7 +355,7 @@ StackingReport stack_graded(const Container<D>& container, std::vector<double> r
     int step = s.place(r, contacts);
     if (step == 0 && rep.reshape_passes < static_cast<std::uint64_t>(options.reshapes)) {
       ++rep.reshape_passes;
-      rep.reshape_moves += s.reshape();
+      rep.reshape_moves += s.reshape(r);
       step = s.place(r, contacts);
     }
     switch (step) {

@@ -51,7 +51,7 @@ TEST(CliStacking, TheVoidsTakeWhatTheStepsLeaveOut) {
   const std::string scene =
       "dimension: 2\nseed: 1\ncontainer: {type: rectangle, min: [0, 0], max: [20, 20]}\n"
       "particles: {radius: {distribution: gradation, basis: mass, curve: [[0.2, 0], [0.4, 100]]}}\n"
-      "target: {solid_fraction: 0.80}\npacker: {method: stacking, order: contacts_first";
+      "target: {solid_fraction: 0.814}\npacker: {method: stacking, order: contacts_first";
   write_bytes(dir.work() / "on.yaml", scene + "}\n");
   write_bytes(dir.work() / "off.yaml", scene + ", voids: false}\n");
   ASSERT_EQ(run_frontpack(dir, "pack off.yaml -o off.csv -q --record off.json").exit_code, 0);
