@@ -79,7 +79,7 @@ struct StackingParameters {
   int random_tries = 4;        ///< (5) completely random positions per particle
   int near_tries = 2;          ///< (6) random positions near a nucleus
   int two_contact_tries = 4;   ///< (7) random positions touching a nucleus and a neighbour
-  int nuclei = 32;             ///< (8) nuclei scanned for three-contact positions, per particle
+  int nuclei = 1000000;        ///< (8) open nuclei tried per particle at most (default: every one; see fill/graded_stacking.hpp)
   int pairs_per_nucleus = 64;  ///< (8) pairs of bodies that can both touch, tried around a nucleus (256: as dense, 1.2-1.7x slower)
   int reshapes = 8;            ///< (11) reshape passes at most (0: none)
   bool contacts_first = false; ///< `order: contacts_first`: (8) first, then (7), (6), (5); `paper`: (5) .. (8)
