@@ -37,7 +37,7 @@ GROUPS = {
     "3d-R2-mass": (3, 5, MASS2, [0.553, 0.575, 0.597]),
 }
 # time against N: the same law in growing containers
-SCALING = {"3d-R2-mass": [3, 5, 8, 12], "2d-R2-mass": [25, 50, 100, 200]}
+SCALING = {"3d-R2-mass": [3, 5, 8, 12, 18, 24], "2d-R2-mass": [25, 50, 100, 200]}
 
 
 def run_case(out, name, d, edge, law, method_keys, phi, seed):
