@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <limits>
 #include <cmath>  // and glibc's sincos
 #include <utility>
 #include <vector>
@@ -82,6 +83,37 @@ void walls_of(const Container<D>& container, const Vec<D>& c, double r, double r
   }
 }
 
+/// The gradient of pair terms read in order of their first particle i (the edges and pairs are
+/// sorted by (i, j)): g_i += k delta and (Range) its radius's += kr summed in registers and
+/// written once per i, g_j -= k delta and its radius's += kr scattered.
+template <int D>
+struct RowGradient {
+  double* g;
+  std::size_t n;
+  bool range;
+  std::uint32_t row = std::numeric_limits<std::uint32_t>::max();
+  Vec<D> gi = Vec<D>::Zero();
+  double gri = 0;
+
+  void add(std::uint32_t i, std::uint32_t j, double k, const Vec<D>& delta, double kr) {
+    if (i != row) {
+      flush();
+      row = i;
+    }
+    gi += k * delta;
+    gri += kr;
+    Eigen::Map<Vec<D>>(g + D * j) -= k * delta;
+    if (range) g[D * n + j] += kr;
+  }
+  void flush() {
+    if (row == std::numeric_limits<std::uint32_t>::max()) return;
+    Eigen::Map<Vec<D>>(g + D * row) += gi;
+    if (range) g[D * n + row] += gri;
+    gi.setZero();
+    gri = 0;
+  }
+};
+
 /// Eq. 4 (normalised, see the header) and its gradient over the unit frame's centres u (and
 /// radii rho with Range): the variables are u (D per particle) followed by rho.
 template <int D>
@@ -100,24 +132,16 @@ struct LeastSquaresObjective {
     if (g) std::fill(g, g + variables(), 0.0);
     const double* rho = radii(v);
     double f = 0;
+    RowGradient<D> rows{g, n, !fixed_rho};
     for (const Edge& e : *edges) {
       const Vec<D> delta = Eigen::Map<const Vec<D>>(v + D * e.i) - Eigen::Map<const Vec<D>>(v + D * e.j);
       const double s = rho[e.i] + rho[e.j];
       const double d = delta.squaredNorm() - s * s;  // Eq. 1
       f += e.weight * d * d;
-      if (g) scatter(g, e.i, e.j, 4 * e.weight * d, delta, -4 * e.weight * d * s);
+      if (g) rows.add(e.i, e.j, 4 * e.weight * d, delta, -4 * e.weight * d * s);
     }
+    if (g) rows.flush();
     return f + boundary_part(v, g);
-  }
-
-  /// g_i += k delta, g_j -= k delta; with Range, both radii's += kr.
-  void scatter(double* g, std::uint32_t i, std::uint32_t j, double k, const Vec<D>& delta, double kr) const {
-    Eigen::Map<Vec<D>>(g + D * i) += k * delta;
-    Eigen::Map<Vec<D>>(g + D * j) -= k * delta;
-    if (!fixed_rho) {
-      g[D * n + i] += kr;
-      g[D * n + j] += kr;
-    }
   }
 
   /// Eq. 4's wall terms (Eq. 3, signed), added to g.
@@ -180,6 +204,7 @@ struct PenaltyObjective {
     const double* rho = eq4->radii(v);
     const bool range = !eq4->fixed_rho;
     double f = 0;
+    RowGradient<D> rows{g, eq4->n, range};
     for (const PairTerm& t : pairs) {
       const Vec<D> delta = Eigen::Map<const Vec<D>>(v + D * t.i) - Eigen::Map<const Vec<D>>(v + D * t.j);
       const double d2 = delta.squaredNorm();
@@ -199,8 +224,9 @@ struct PenaltyObjective {
         if (dist > 0) k -= kp / dist;
         kr += kp;
       }
-      if (g && (k != 0 || kr != 0)) eq4->scatter(g, t.i, t.j, k, delta, kr);
+      if (g && (k != 0 || kr != 0)) rows.add(t.i, t.j, k, delta, kr);
     }
+    if (g) rows.flush();
     f += eq4->boundary_part(v, g);
     for (const BoundaryTerm<D>& b : walls) {
       const Eigen::Map<const Vec<D>> u(v + D * b.i);
@@ -290,62 +316,64 @@ void unpack_variables(const std::vector<double>& x, bool range, std::vector<Vec<
   }
 }
 
-/// Runs L-BFGS (densify/lbfgs.hpp) on f from x (in place); returns the value.
-template <class F>
-double minimise_free(std::vector<double>& x, int evaluations, double stop_below, F& f) {
-  Eigen::VectorXd v = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
-  LbfgsOptions o;
-  o.evaluations = std::max(evaluations, 1);
-  o.stop_below = stop_below;
-  o.memory = 4;  // as good as 6 or 10 here, and each pair costs a pass over two vectors of every unknown
-  const LbfgsResult r = minimise_lbfgs(v, [&](const Eigen::VectorXd& at, Eigen::VectorXd& g) { return f(at.data(), g.data()); }, o);
-  Eigen::Map<Eigen::VectorXd>(x.data(), v.size()) = v;
-  return r.value;
-}
-
-/// The same within bounds (null: none; a bound pair must be finite): each bounded variable is
-/// mid + half sin(z) over a free z. NLopt's bounded L-BFGS, tried first, stalled on many bounded
-/// radii (50,000 spheres: Eq. 4 from 5101 to 4005 in 1500 evaluations; with this change of
-/// variables it went to 87).
-template <class F>
-double minimise(std::vector<double>& x, const std::vector<double>* lower, const std::vector<double>* upper, int evaluations,
-                double stop_below, F& f) {
-  if (!lower) return minimise_free(x, evaluations, stop_below, f);
-  const std::size_t m = x.size();
-  std::vector<char> bounded(m);
-  std::vector<double> mid(m), half(m), v(m);
-  for (std::size_t k = 0; k < m; ++k) {
-    bounded[k] = std::isfinite((*lower)[k]) && std::isfinite((*upper)[k]);
-    if (!bounded[k]) continue;
-    mid[k] = ((*lower)[k] + (*upper)[k]) / 2;
-    half[k] = ((*upper)[k] - (*lower)[k]) / 2;
-    x[k] = half[k] > 0 ? std::asin(std::clamp((x[k] - mid[k]) / half[k], -1.0, 1.0)) : 0.0;
-  }
-  std::vector<double> cosine(m);
-  const auto to_v = [&](const double* z) {
-    for (std::size_t k = 0; k < m; ++k) {
-      if (!bounded[k]) {
-        v[k] = z[k];
-        continue;
+/// L-BFGS (densify/lbfgs.hpp) within bounds (none: null; a bound pair must be finite): each
+/// bounded variable is mid + half sin(z) over a free z. NLopt's bounded L-BFGS, tried first,
+/// stalled on many bounded radii (50,000 spheres: Eq. 4 from 5101 to 4005 in 1500 evaluations;
+/// with this change of variables it went to 87). Its vectors are kept from one run to the next
+/// (Eq. 4, then the removal's rounds, with the same bounds).
+class BoundedLbfgs {
+ public:
+  BoundedLbfgs(const std::vector<double>* lower, const std::vector<double>* upper) {
+    if (!lower) return;
+    for (std::size_t k = 0; k < lower->size(); ++k)
+      if (std::isfinite((*lower)[k]) && std::isfinite((*upper)[k])) {
+        index_.push_back(k);
+        mid_.push_back(((*lower)[k] + (*upper)[k]) / 2);
+        half_.push_back(((*upper)[k] - (*lower)[k]) / 2);
       }
-      double sine;
-      ::sincos(z[k], &sine, &cosine[k]);
-      v[k] = mid[k] + half[k] * sine;
+    cosine_.resize(index_.size());
+  }
+
+  /// Minimises f (f(v, g): the value at v, its gradient into g) from x, in place; the value.
+  template <class F>
+  double run(std::vector<double>& x, int evaluations, double stop_below, F& f) {
+    z_ = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
+    for (std::size_t q = 0; q < index_.size(); ++q) {
+      const std::size_t k = index_[q];
+      z_[k] = half_[q] > 0 ? std::asin(std::clamp((x[k] - mid_[q]) / half_[q], -1.0, 1.0)) : 0.0;
     }
-  };
-  auto over_z = [&](const double* z, double* g) {
-    to_v(z);
-    const double value = f(v.data(), g);
-    if (g)
-      for (std::size_t k = 0; k < m; ++k)
-        if (bounded[k]) g[k] *= half[k] * cosine[k];
+    LbfgsOptions o;
+    o.evaluations = std::max(evaluations, 1);
+    o.stop_below = stop_below;
+    o.memory = 4;  // as good as 6 or 10 here, and each pair costs a pass over two vectors of every unknown
+    const auto over_z = [&](const Eigen::VectorXd& z, Eigen::VectorXd& g) {
+      const double value = f(to_v(z), g.data());
+      for (std::size_t q = 0; q < index_.size(); ++q) g[index_[q]] *= half_[q] * cosine_[q];
+      return value;
+    };
+    const double value = minimise_lbfgs(z_, over_z, o, workspace_).value;
+    const double* v = to_v(z_);
+    std::copy(v, v + x.size(), x.data());
     return value;
-  };
-  const double value = minimise_free(x, evaluations, stop_below, over_z);
-  to_v(x.data());
-  x = v;
-  return value;
-}
+  }
+
+ private:
+  const double* to_v(const Eigen::VectorXd& z) {
+    if (index_.empty()) return z.data();
+    v_ = z;
+    for (std::size_t q = 0; q < index_.size(); ++q) {
+      double sine;
+      ::sincos(z[index_[q]], &sine, &cosine_[q]);
+      v_[index_[q]] = mid_[q] + half_[q] * sine;
+    }
+    return v_.data();
+  }
+
+  std::vector<std::size_t> index_;  ///< the bounded variables
+  std::vector<double> mid_, half_, cosine_;
+  Eigen::VectorXd z_, v_;
+  LbfgsWorkspace workspace_;
+};
 
 /// Steps 1-4 of the header on a packing in the unit frame (u, rho): the result in the local
 /// frame (c, r), and whether it is valid (no overlap beyond the tolerance, every ball inside).
@@ -359,8 +387,7 @@ struct OverlapRemoval {
   int relax_rounds, relax_evaluations;
   double contact_tolerance;
   LeastSquaresObjective<D>* eq4;
-  const std::vector<double>* lower;  ///< Eq. 4's bounds (null: none)
-  const std::vector<double>* upper;
+  BoundedLbfgs* minimiser;  ///< within Eq. 4's bounds
 
   /// Fills rep's figures of steps 1-4.
   bool run(std::vector<Vec<D>>& u, std::vector<double>& rho, std::vector<Vec<D>>& c, std::vector<double>& r,
@@ -396,7 +423,7 @@ struct OverlapRemoval {
       }
       pack_variables<D>(u, rho, range, x);
       const int before = eq4->evaluations;
-      minimise(x, lower, upper, relax_evaluations, -HUGE_VAL, penalised);
+      minimiser->run(x, relax_evaluations, -HUGE_VAL, penalised);
       unpack_variables<D>(x, range, u, rho);
       to_local();
       rep.relax_rounds += 1;
@@ -554,7 +581,8 @@ LeastSquaresReport densify_in_order(Packing<D>& packing, const Container<D>& con
   }
   LeastSquaresObjective<D> eq4{&edges, &boundary, range ? nullptr : &rho, n};
   rep.objective_before = eq4(x.data(), nullptr);
-  rep.objective_after = minimise(x, range ? &lower : nullptr, range ? &upper : nullptr, options.evaluations, 0.0, eq4);
+  BoundedLbfgs minimiser(range ? &lower : nullptr, range ? &upper : nullptr);
+  rep.objective_after = minimiser.run(x, options.evaluations, 0.0, eq4);
   rep.evaluations = eq4.evaluations - 1;
   unpack_variables<D>(x, range, u, rho);
   rep.solve_seconds = since(ts);
@@ -584,7 +612,7 @@ LeastSquaresReport densify_in_order(Packing<D>& packing, const Container<D>& con
     rho0[i] = r0[i] / frame.scale;
   }
   const OverlapRemoval<D> removal{container, frame, r0, r_min, r_max, range, options.relax_rounds, options.relax_evaluations,
-                                  contact_tolerance, &eq4, range ? &lower : nullptr, range ? &upper : nullptr};
+                                  contact_tolerance, &eq4, &minimiser};
   std::vector<Vec<D>> ut(n), best_c = c0;
   std::vector<double> rhot(n), best_r = r0;
   const auto attempt = [&](double t) {

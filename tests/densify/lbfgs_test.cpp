@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 namespace fp {
 namespace {
@@ -78,6 +79,23 @@ TEST(Lbfgs, BudgetAndStopValueAreHonouredAndRerunsAreIdentical) {
   const LbfgsResult rc = minimise_lbfgs(c, f, o);
   EXPECT_LE(rc.value, start / 2);
   EXPECT_LT(rc.evaluations, 1000) << "stopped at the stop value, not the budget";
+  // A workspace kept between runs (of other sizes too) gives the same iterates as a fresh one.
+  LbfgsWorkspace w;
+  o.evaluations = 37;
+  o.stop_below = -std::numeric_limits<double>::infinity();
+  Eigen::VectorXd small = Eigen::VectorXd::Zero(3);
+  const auto bowl = [](const Eigen::VectorXd& v, Eigen::VectorXd& gv) {
+    gv = 2 * v - Eigen::VectorXd::Ones(v.size());
+    return v.squaredNorm() - v.sum();
+  };
+  minimise_lbfgs(small, bowl, o, w);
+  EXPECT_NEAR(small[0], 0.5, 1e-9);
+  for (int run = 0; run < 2; ++run) {
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
+    const LbfgsResult rd = minimise_lbfgs(d, f, o, w);
+    EXPECT_EQ(rd.value, ra.value) << "run " << run;
+    EXPECT_TRUE(d == a) << "run " << run;
+  }
 }
 
 }  // namespace
