@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <limits>
 #include <cmath>  // and glibc's sincos
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -259,18 +259,6 @@ void near_pairs(const std::vector<Vec<D>>& c, const std::vector<double>& r, doub
     });
 }
 
-/// The largest overlap (relative to the smaller radius; past a wall, to the radius) in the
-/// local frame, by the container's own distance.
-template <int D>
-double max_overlap(const std::vector<Vec<D>>& c, const std::vector<double>& r, const Container<D>& container) {
-  double worst = 0;
-  near_pairs<D>(c, r, 0.0, [&](std::uint32_t i, std::uint32_t j, double o) {
-    worst = std::max(worst, o / std::min(r[i], r[j]));
-  });
-  for (std::size_t i = 0; i < c.size(); ++i) worst = std::max(worst, (container.signed_distance(c[i]) + r[i]) / r[i]);
-  return worst;
-}
-
 /// Whether no pair overlaps beyond tol * the smaller radius and every ball is inside.
 template <int D>
 bool valid(const std::vector<Vec<D>>& c, const std::vector<double>& r, const Container<D>& container, double tol) {
@@ -404,17 +392,24 @@ struct OverlapRemoval {
     };
     to_local();
     // Step 1: Eq. 4 under a penalty on the overlaps, its weight raised round after round.
-    double worst = max_overlap<D>(c, r, container);
     std::vector<double> x(D * n + (range ? n : 0));
     PenaltyObjective<D> penalised{eq4, kPenaltyStart, {}, {}};
-    for (int round = 0; round < relax_rounds && worst > contact_tolerance / 2; ++round) {
-      penalised.walls.clear();
-      std::vector<Edge> close;
-      near_pairs<D>(u, rho, 0.2, [&](std::uint32_t i, std::uint32_t j, double) {
+    std::vector<Edge> close;
+    for (int round = 0;; ++round) {
+      // The pairs near enough to overlap in the round (within 0.2 of the smaller radius), and
+      // the largest overlap now from the same pass (relative: the frame's scale drops out).
+      close.clear();
+      double worst = 0;
+      near_pairs<D>(u, rho, 0.2, [&](std::uint32_t i, std::uint32_t j, double o) {
         const double m = std::min(rho[i], rho[j]);
         close.push_back({i, j, 1 / (m * m)});
+        worst = std::max(worst, o / m);
       });
+      for (std::size_t i = 0; i < n; ++i) worst = std::max(worst, (container.signed_distance(c[i]) + r[i]) / r[i]);
+      rep.max_overlap_relaxed = worst;
+      if (round == relax_rounds || worst <= contact_tolerance / 2) break;
       penalised.set_pairs(close);
+      penalised.walls.clear();
       for (std::size_t i = 0; i < n; ++i) {
         near.clear();
         walls_of<D>(container, c[i], r[i], 0.5 * r[i], r[i], true, scratch, near);
@@ -428,10 +423,8 @@ struct OverlapRemoval {
       to_local();
       rep.relax_rounds += 1;
       rep.relax_evaluations += eq4->evaluations - before;
-      worst = max_overlap<D>(c, r, container);
       penalised.mu *= kPenaltyGrowth;
     }
-    rep.max_overlap_relaxed = worst;
 
     // Step 2: what overlap is left comes off the radii, each pair's from both in proportion to
     // what they can give above their floor.
