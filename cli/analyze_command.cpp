@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "cli/failure_report.hpp"
+#include "cli/pack_api.hpp"
 #include "cli/packing_input.hpp"
 #include "contact/shape_analysis.hpp"
 #include "contact/shape_validation.hpp"
@@ -21,7 +22,6 @@
 #include "core/io/output_paths.hpp"
 #include "core/io/temp_file_registry.hpp"
 #include "core/metrics/packing_analysis.hpp"
-#include "core/system/parallel_parts.hpp"
 
 #ifndef FRONTPACK_PLOT_SCRIPT
 #error "FRONTPACK_PLOT_SCRIPT must name python/plot_analysis.py"
@@ -143,36 +143,28 @@ int report(const PackingAnalysis& a, const std::optional<Scene>& scene, const st
   return 0;
 }
 
+/// The radius figure's sample and law: the radii against the scene's law; for shapes the sizes
+/// against their law for one template, else the volume-equivalent radii.
 template <int D>
-int analyze(const std::optional<Scene>& scene, const Packing<D>& P, const AnalyzeCommandOptions& o) {
-  const Container<D>* container = nullptr;
-  const RadiusDistribution* dist = nullptr;
-  AnalysisOptions opt;
-  if (scene) {
-    container = scene->container<D>();
-    dist = scene->radii.get();
-    opt.contact_tolerance = scene->packer.contact_tolerance;
-  }
-  if (o.tolerance >= 0) opt.contact_tolerance = o.tolerance;
-  opt.threads = thread_count(o.threads);
-  return report(analyze_packing<D>(P, container, dist, opt), scene, P.radii, dist, o);
+std::pair<std::vector<double>, const RadiusDistribution*> radius_figure(const PackingInput& in, const Packing<D>& P) {
+  return {P.radii, in.scene ? in.scene->radii.get() : nullptr};
+}
+template <int D>
+std::pair<std::vector<double>, const RadiusDistribution*> radius_figure(const PackingInput& in, const ShapePacking<D>& P) {
+  const std::vector<RequestedTemplate> requested = requested_templates(*in.scene);
+  const bool one = requested.size() == 1 && requested[0].size;
+  std::vector<double> sizes;
+  for (const Particle<D>& p : P.particles) sizes.push_back(one ? p.size : equivalent_radius<D>(p.shape->measure()));
+  return {sizes, one ? requested[0].size : nullptr};
 }
 
-/// A packing of shapes (read from its json output with its scene): the same figures through
-/// contact/shape_analysis.hpp, at the scene's tolerance of `pack` (minimisation.gap_tolerance).
-/// The radius figure shows the sizes against their law for one template, else the
-/// volume-equivalent radii.
-template <int D>
-int analyze(const std::optional<Scene>& scene, const ShapePacking<D>& P, const AnalyzeCommandOptions& o) {
-  AnalysisOptions opt;
-  opt.contact_tolerance = o.tolerance >= 0 ? o.tolerance : scene->packer.minimisation.gap_tolerance;
-  opt.threads = thread_count(o.threads);
-  const std::vector<RequestedTemplate> requested = requested_templates(*scene);
-  const PackingAnalysis a = analyze_shape_packing<D>(P, *scene, opt);
-  std::vector<double> sizes;
-  const bool one = requested.size() == 1 && requested[0].size;
-  for (const Particle<D>& p : P.particles) sizes.push_back(one ? p.size : equivalent_radius<D>(p.shape->measure()));
-  return report(a, scene, sizes, one ? requested[0].size : nullptr, o);
+/// The analysis of cli/pack_api.hpp (a packing of shapes at the scene's tolerance of `pack`,
+/// minimisation.gap_tolerance), reported.
+template <class P>
+int analyze(const PackingInput& in, const P& packing, const AnalyzeCommandOptions& o) {
+  const PackingAnalysis a = analyze_input(in, o.tolerance, o.threads);
+  const auto [sizes, law] = radius_figure(in, packing);
+  return report(a, in.scene, sizes, law, o);
 }
 
 }  // namespace
@@ -202,8 +194,8 @@ int run_analyze_command(const AnalyzeCommandOptions& o) {
   }
   try {
     const Activity doing("analysing packing '" + o.packing_path + "'");
-    if (in.shapes) return in.dimension == 2 ? analyze<2>(in.scene, in.shapes2, o) : analyze<3>(in.scene, in.shapes3, o);
-    return in.dimension == 2 ? analyze<2>(in.scene, in.packing2, o) : analyze<3>(in.scene, in.packing3, o);
+    if (in.shapes) return in.dimension == 2 ? analyze(in, in.shapes2, o) : analyze(in, in.shapes3, o);
+    return in.dimension == 2 ? analyze(in, in.packing2, o) : analyze(in, in.packing3, o);
   } catch (...) {
     return report_failure(1);
   }

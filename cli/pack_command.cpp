@@ -1,6 +1,7 @@
 #include "cli/pack_command.hpp"
 
 #include "cli/failure_report.hpp"
+#include "cli/pack_api.hpp"
 #include "cli/packing_input.hpp"
 #include "cli/pack_run_steps.hpp"
 #include "cli/run_record_start.hpp"
@@ -21,7 +22,6 @@
 #include "core/io/output_paths.hpp"
 #include "core/io/packing_writers.hpp"
 #include "core/io/run_record.hpp"
-#include "core/io/scene_limits.hpp"
 #include "core/io/scene_yaml.hpp"
 #include "front/block_exchange.hpp"
 #include "shapes/io/shape_packing_writers.hpp"
@@ -37,12 +37,10 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Applies -o/--format/--seed to the scene and checks every file the run will write (outputs,
+/// Applies -o/--format to the scene and checks every file the run will write (outputs,
 /// their side files, the record) before any work is done, so a bad path costs nothing and
 /// creates nothing, and no output replaces another or an input.
 void apply_overrides(Scene& scene, const PackCommandOptions& o) {
-  if (o.seed) scene.seed = *o.seed;
-  if (o.threads) scene.packer.threads = *o.threads;
   if (!o.format.empty() && o.output_path.empty()) throw InputError("--format needs -o PATH");
   if (!o.output_path.empty()) {
     OutputSpec out;
@@ -79,8 +77,7 @@ int run(const Scene& scene, const PackCommandOptions& o, Make&& make) {
   const typename Kind::Result res = pack_with_progress(o.progress && root, make);
   if (!root) return 0;  // rank 0 holds the packing: it checks, writes and summarises
   const auto& P = res.packing;
-  const double n = static_cast<double>(P.size());
-  const double rate = res.seconds > 0 ? n / res.seconds : 0.0;
+  const double rate = particles_per_second(P.size(), res.seconds);
 
   // The full analysis where it is shown or stored; the validation always.
   bool stored = !o.record_path.empty();
@@ -94,27 +91,7 @@ int run(const Scene& scene, const PackCommandOptions& o, Make&& make) {
   const double check_seconds = since(t_check);
   const ValidationReport& v = check.validation;
 
-  RunRecord rec = start_run_record<D>(scene, container, P.size());
-  rec.distribution_description = particles_description(scene);
-  rec.timings = {{"pack", res.seconds}, {check.timing_name, check_seconds}};
-  for (const auto& [step, seconds] : check.step_timings) rec.timings.emplace_back(check.timing_name + ": " + step, seconds);
-  rec.metrics = {{"volume_fraction_container", check.volume_fraction},
-                 {"contact_tolerance", v.tolerance},
-                 {"mean_coordination", v.mean_coordination()},
-                 {"max_overlap_over_smaller_radius", v.max_overlap_rel},
-                 {"max_contact_gap_over_smaller_radius", v.max_contact_gap_rel},
-                 {"max_outside_over_r", v.max_outside_rel},
-                 {"particles_per_second", rate}};
-  rec.metrics.insert(rec.metrics.end(), check.metrics.begin(), check.metrics.end());
-  rec.counters = front_counter_entries(res.counters);
-  const std::vector<std::pair<std::string, std::uint64_t>> common = {
-      {"contacts", v.contacts}, {"wall_contacts", v.wall_contacts}, {"pairs_checked", v.pairs_checked}};
-  rec.counters.insert(rec.counters.end(), common.begin(), common.end());
-  rec.counters.insert(rec.counters.end(), check.counters.begin(), check.counters.end());
-  rec.info = {{"stop_reason", Kind::stop_text(res)}, {"validation", v.ok ? "ok" : "FAILED"}};
-  rec.info.insert(rec.info.end(), check.info.begin(), check.info.end());
-  for (std::size_t r = 0; r < res.ranks.size(); ++r) rec.info.emplace_back("rank_" + std::to_string(r), rank_work_text(res.ranks[r]));
-  rec.analysis_json = check.analysis_json;
+  const RunRecord rec = pack_record<D, Kind>(scene, res, check, check_seconds);
 
   const double write_seconds = write_outputs(scene, o.record_path, rec, [&](OutputFormat format, const std::string& path) {
     write_packing<D>(format, path, P, rec);
@@ -165,10 +142,9 @@ int run_pack_command(const PackCommandOptions& o) {
       scene = load_scene(o.scene_path);
     }
     apply_overrides(scene, o);
-    // Every shape-specific input problem (family, parameters, output formats) and what the run
-    // asks of the machine, before any work.
-    if (!scene.particle_templates.empty()) check_shape_scene(scene);
-    else check_run_limits(scene, estimate_run_demand(scene, mean_ball_measure(*scene.radii, scene.dimension)), available_memory());
+    // --seed, -j; every shape-specific input problem (family, parameters, output formats) and
+    // what the run asks of the machine, before any work.
+    prepare_scene(scene, o.seed, o.threads);
   } catch (...) {
     return report_failure(2);
   }

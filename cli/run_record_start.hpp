@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "cli/pack_check.hpp"
 #include "core/geometry/container.hpp"
 #include "core/io/run_record.hpp"
 #include "core/io/scene.hpp"
@@ -64,6 +65,42 @@ inline std::string particles_description(const Scene& scene) {
   std::string d;
   for (const ParticleTemplateSpec& t : scene.particle_templates) d += (d.empty() ? "" : "; ") + t.family + " " + t.size->describe();
   return d;
+}
+
+/// Particles placed per second of packing (0 for no time).
+inline double particles_per_second(std::size_t n, double seconds) {
+  return seconds > 0 ? static_cast<double>(n) / seconds : 0.0;
+}
+
+/// The run record of a packing run and its check (`Kind`: SpherePack or ShapePack): what
+/// `frontpack pack --record` writes and the Python module's `Packing.record` holds.
+template <int D, class Kind>
+RunRecord pack_record(const Scene& scene, const typename Kind::Result& res, const PackCheck& check, double check_seconds) {
+  const auto& P = res.packing;
+  const ValidationReport& v = check.validation;
+  const double rate = particles_per_second(P.size(), res.seconds);
+  RunRecord rec = start_run_record<D>(scene, *scene.container<D>(), P.size());
+  rec.distribution_description = particles_description(scene);
+  rec.timings = {{"pack", res.seconds}, {check.timing_name, check_seconds}};
+  for (const auto& [step, seconds] : check.step_timings) rec.timings.emplace_back(check.timing_name + ": " + step, seconds);
+  rec.metrics = {{"volume_fraction_container", check.volume_fraction},
+                 {"contact_tolerance", v.tolerance},
+                 {"mean_coordination", v.mean_coordination()},
+                 {"max_overlap_over_smaller_radius", v.max_overlap_rel},
+                 {"max_contact_gap_over_smaller_radius", v.max_contact_gap_rel},
+                 {"max_outside_over_r", v.max_outside_rel},
+                 {"particles_per_second", rate}};
+  rec.metrics.insert(rec.metrics.end(), check.metrics.begin(), check.metrics.end());
+  rec.counters = front_counter_entries(res.counters);
+  const std::vector<std::pair<std::string, std::uint64_t>> common = {
+      {"contacts", v.contacts}, {"wall_contacts", v.wall_contacts}, {"pairs_checked", v.pairs_checked}};
+  rec.counters.insert(rec.counters.end(), common.begin(), common.end());
+  rec.counters.insert(rec.counters.end(), check.counters.begin(), check.counters.end());
+  rec.info = {{"stop_reason", Kind::stop_text(res)}, {"validation", v.ok ? "ok" : "FAILED"}};
+  rec.info.insert(rec.info.end(), check.info.begin(), check.info.end());
+  for (std::size_t r = 0; r < res.ranks.size(); ++r) rec.info.emplace_back("rank_" + std::to_string(r), rank_work_text(res.ranks[r]));
+  rec.analysis_json = check.analysis_json;
+  return rec;
 }
 
 /// The first two lines of the summary: what was run, and in which container.

@@ -7,19 +7,17 @@
 #include <vector>
 
 #include "cli/failure_report.hpp"
-#include "cli/pack_check.hpp"
+#include "cli/pack_api.hpp"
 #include "cli/packing_input.hpp"
 #include "cli/run_record_start.hpp"
-#include "contact/shape_validation.hpp"
 #include "core/metrics/validate.hpp"
-#include "core/system/parallel_parts.hpp"
 
 namespace fp {
 namespace {
 
 /// The one verdict of `frontpack pack`, printed the same for every kind of particle: `r` comes
-/// from validate_packing (spheres) or validate_shapes (shapes), as in `pack`: same function, same
-/// tolerance, same size tests and level.
+/// from validate_input (cli/pack_api.hpp: validate_packing or validate_shapes), as in `pack`:
+/// same function, same tolerance, same size tests and level.
 template <int D>
 int report(const Scene& scene, const ValidationReport& r, const ValidateCommandOptions& o) {
   const Container<D>& container = *scene.container<D>();
@@ -65,20 +63,6 @@ int report(const Scene& scene, const ValidationReport& r, const ValidateCommandO
   return r.ok ? 0 : 3;
 }
 
-template <int D>
-int validate(const Scene& scene, const Packing<D>& P, const ValidateCommandOptions& o) {
-  const double tol = o.tolerance >= 0 ? o.tolerance : overlap_tolerance(scene);
-  return report<D>(scene, validate_packing<D>(P, *scene.container<D>(), radii_to_check(scene).get(), tol, o.ks_alpha >= 0 ? o.ks_alpha : radii_alpha_of(scene), nullptr,
-                                                 thread_count(o.threads)),
-                   o);
-}
-
-template <int D>
-int validate(const Scene& scene, const ShapePacking<D>& P, const ValidateCommandOptions& o) {
-  const double tol = o.tolerance >= 0 ? o.tolerance : scene.packer.minimisation.gap_tolerance;
-  return report<D>(scene, validate_shapes<D>(P, *scene.container<D>(), tol, requested_templates(scene), o.ks_alpha >= 0 ? o.ks_alpha : kRadiiAlpha), o);
-}
-
 }  // namespace
 
 int run_validate_command(const ValidateCommandOptions& o) {
@@ -91,8 +75,8 @@ int run_validate_command(const ValidateCommandOptions& o) {
   }
   try {
     const Activity doing("validating packing '" + o.packing_path + "'");
-    if (in.shapes) return in.dimension == 2 ? validate<2>(*in.scene, in.shapes2, o) : validate<3>(*in.scene, in.shapes3, o);
-    return in.dimension == 2 ? validate<2>(*in.scene, in.packing2, o) : validate<3>(*in.scene, in.packing3, o);
+    const ValidationReport r = validate_input(in, o.tolerance, o.ks_alpha, o.threads);
+    return in.dimension == 2 ? report<2>(*in.scene, r, o) : report<3>(*in.scene, r, o);
   } catch (...) {
     return report_failure(1);
   }

@@ -71,6 +71,10 @@ Json validation_json(const ValidationReport& v) {
 
 }  // namespace
 
+std::string validation_json_text(const ValidationReport& v) {
+  return validation_json(v).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
 std::string analysis_json(const PackingAnalysis& a, bool include_timings) {
   Json j;
   j["dimension"] = a.dimension;

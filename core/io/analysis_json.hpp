@@ -38,4 +38,7 @@ namespace fp {
 /// unless include_timings.
 std::string analysis_json(const PackingAnalysis& analysis, bool include_timings = false);
 
+/// The analysis' `validation` member alone (the verdict of `frontpack validate`), pretty-printed.
+std::string validation_json_text(const ValidationReport& validation);
+
 }  // namespace fp

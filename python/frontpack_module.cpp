@@ -1,0 +1,247 @@
+// The Python module `frontpack` (pybind11): the command line's pipeline (cli/pack_api.hpp) with
+// the packing held in memory and its arrays handed to numpy without copies.
+//   import frontpack
+//   p = frontpack.pack("scene.yaml", seed=3)      # or a dict with the scene file's schema
+//   p.centers, p.radii                            # numpy views, read-only (n x D, n)
+//   p.record["metrics"]["volume_fraction_container"], p.analysis["coordination"]
+//   frontpack.validate(p)["ok"]; p.write("out.vtu")
+// Errors are Python exceptions with the command line's messages: frontpack.SceneError (a
+// ValueError) names the file, line and key of a bad scene.
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/pack_api.hpp"
+#include "core/io/analysis_json.hpp"
+#include "core/io/output_format.hpp"
+#include "core/io/packing_writers.hpp"
+#include "core/io/scene_error.hpp"
+#include "core/io/scene_yaml.hpp"
+#include "frontpack/version.hpp"
+#include "shapes/io/shape_packing_writers.hpp"
+#include "shapes/pose.hpp"
+
+namespace py = pybind11;
+
+namespace fp {
+namespace {
+
+/// A packing made by pack(): the particles (PackingInput, with the scene), the record and the
+/// verdict, and for shapes the arrays the particles' poses are unpacked into once.
+struct PyPacking {
+  PackOutcome run;
+  std::vector<double> positions, orientations, sizes;  ///< shapes: n x D, n x 4 (3D) or n (2D), n
+  std::vector<std::int32_t> template_ids;
+
+  const PackingInput& in() const { return run.packed; }
+  std::size_t size() const {
+    const PackingInput& p = in();
+    if (p.shapes) return p.dimension == 2 ? p.shapes2.size() : p.shapes3.size();
+    return p.dimension == 2 ? p.packing2.size() : p.packing3.size();
+  }
+};
+
+template <int D>
+void unpack_shapes(PyPacking& out, const ShapePacking<D>& P) {
+  for (const Particle<D>& p : P.particles) {
+    const Vec<D> x = P.origin + p.pose.position;
+    out.positions.insert(out.positions.end(), x.data(), x.data() + D);
+    const Eigen::Vector4d q = quaternion_of<D>(p.pose.rotation);
+    if constexpr (D == 3) out.orientations.insert(out.orientations.end(), q.data(), q.data() + 4);
+    else out.orientations.push_back(2 * std::atan2(q[3], q[0]));  // the rotation about z
+    out.sizes.push_back(p.size);
+    out.template_ids.push_back(p.template_id);
+  }
+}
+
+/// A read-only numpy array over `data` (rows x cols, or rows when cols is 0) owned by `owner`.
+template <class T>
+py::array view(const T* data, std::size_t rows, std::size_t cols, std::size_t row_stride, py::handle owner) {
+  std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(rows)}, strides{static_cast<py::ssize_t>(row_stride)};
+  if (cols > 0) shape.push_back(static_cast<py::ssize_t>(cols)), strides.push_back(sizeof(T));
+  py::array a(py::dtype::of<T>(), shape, strides, data, owner);
+  py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return a;
+}
+
+/// The centres in absolute coordinates: a view of the packing's own when its frame is at the
+/// origin (a scene near the origin), else computed once (origin + local, rounded as the
+/// writers' doubles are).
+template <int D>
+py::array centers_of(const Packing<D>& P, py::handle owner) {
+  if (P.origin.isZero()) return view(P.centers.empty() ? nullptr : P.centers[0].data(), P.size(), D, sizeof(Vec<D>), owner);
+  py::array_t<double> a({static_cast<py::ssize_t>(P.size()), static_cast<py::ssize_t>(D)});
+  auto w = a.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < P.size(); ++i)
+    for (int k = 0; k < D; ++k) w(static_cast<py::ssize_t>(i), k) = P.origin[k] + P.centers[i][k];
+  return a;
+}
+
+py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
+
+/// The scene of `source`: a path (str or os.PathLike) to a scene file, or a dict with the scene
+/// file's schema (given to the parser as JSON, a subset of YAML; messages name its dotted keys).
+Scene scene_from(const py::object& source) {
+  if (py::isinstance<py::dict>(source)) {
+    const std::string text = py::module_::import("json").attr("dumps")(source, py::arg("indent") = 1).cast<std::string>();
+    return parse_scene(text, "<dict>");
+  }
+  const std::string path = py::module_::import("os").attr("fspath")(source).cast<std::string>();
+  return load_scene(path);
+}
+
+std::shared_ptr<PyPacking> pack(const py::object& source, std::optional<std::uint64_t> seed, std::optional<int> threads,
+                                py::object progress) {
+  Scene scene = scene_from(source);
+  prepare_scene(scene, seed, threads);
+  ProgressFn fn;
+  if (!progress.is_none())
+    fn = [&progress](std::uint64_t n, double seconds, double vf) {
+      const py::gil_scoped_acquire gil;
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();  // Ctrl-C stops the run
+      progress(n, seconds, vf);                                       // an exception in it too
+    };
+  auto out = std::make_shared<PyPacking>();
+  {
+    const py::gil_scoped_release released;
+    out->run = pack_scene(scene, fn);
+  }
+  const PackingInput& p = out->in();
+  if (p.shapes) p.dimension == 2 ? unpack_shapes<2>(*out, p.shapes2) : unpack_shapes<3>(*out, p.shapes3);
+  return out;
+}
+
+/// The packing's scene: the one it was packed in, or `scene` (a path or dict) given instead.
+PackingInput with_scene(const PyPacking& p, const py::object& scene) {
+  PackingInput in = p.in();
+  if (!scene.is_none()) in.scene = scene_from(scene);
+  return in;
+}
+
+void write_file(const PyPacking& p, const std::string& path, const std::string& format) {
+  const OutputFormat f = format.empty() ? format_from_extension(path) : parse_output_format(format);
+  const PackingInput& in = p.in();
+  const py::gil_scoped_release released;
+  if (in.shapes) {
+    in.dimension == 2 ? write_packing<2>(f, path, in.shapes2, p.run.record) : write_packing<3>(f, path, in.shapes3, p.run.record);
+  } else {
+    in.dimension == 2 ? write_packing<2>(f, path, in.packing2, p.run.record) : write_packing<3>(f, path, in.packing3, p.run.record);
+  }
+}
+
+}  // namespace
+}  // namespace fp
+
+PYBIND11_MODULE(frontpack, m) {
+  using namespace fp;
+  m.doc() = "frontpack: dense packings of spheres, disks and shapes by the advancing front (and the methods beside it)";
+  m.attr("__version__") = kVersion;
+  py::register_exception<SceneError>(m, "SceneError", PyExc_ValueError);
+
+  py::class_<PyPacking, std::shared_ptr<PyPacking>>(m, "Packing", "A packing made by frontpack.pack, with its run record")
+      .def_property_readonly("dimension", [](const PyPacking& p) { return p.in().dimension; })
+      .def_property_readonly("shapes", [](const PyPacking& p) { return p.in().shapes; },
+                             "True for particles of shapes (positions, orientations, ...), False for spheres or disks")
+      .def("__len__", &PyPacking::size)
+      .def_property_readonly(
+          "centers",
+          [](py::object self) {
+            const PyPacking& p = self.cast<const PyPacking&>();
+            if (p.in().shapes) throw py::attribute_error("a packing of shapes has positions, not centers");
+            return p.in().dimension == 2 ? centers_of<2>(p.in().packing2, self) : centers_of<3>(p.in().packing3, self);
+          },
+          "sphere (disk) centres, absolute coordinates, n x D (read-only; a view when the frame is at the origin)")
+      .def_property_readonly(
+          "radii",
+          [](py::object self) {
+            const PyPacking& p = self.cast<const PyPacking&>();
+            if (p.in().shapes) throw py::attribute_error("a packing of shapes has sizes, not radii");
+            const std::vector<double>& r = p.in().dimension == 2 ? p.in().packing2.radii : p.in().packing3.radii;
+            return view(r.data(), r.size(), 0, sizeof(double), self);
+          },
+          "sphere (disk) radii, n (read-only view)")
+      .def_property_readonly("positions", [](py::object self) {
+            const PyPacking& p = self.cast<const PyPacking&>();
+            if (!p.in().shapes) throw py::attribute_error("a packing of spheres has centers, not positions");
+            return view(p.positions.data(), p.size(), p.in().dimension, p.in().dimension * sizeof(double), self);
+          }, "shape positions (reference points), absolute, n x D")
+      .def_property_readonly("orientations", [](py::object self) {
+            const PyPacking& p = self.cast<const PyPacking&>();
+            if (!p.in().shapes) throw py::attribute_error("a packing of spheres has no orientations");
+            const bool q = p.in().dimension == 3;
+            return view(p.orientations.data(), p.size(), q ? 4 : 0, (q ? 4 : 1) * sizeof(double), self);
+          }, "3D: unit quaternions (w, x, y, z), n x 4; 2D: angles in radians, n")
+      .def_property_readonly("sizes", [](py::object self) {
+            const PyPacking& p = self.cast<const PyPacking&>();
+            if (!p.in().shapes) throw py::attribute_error("a packing of spheres has radii, not sizes");
+            return view(p.sizes.data(), p.size(), 0, sizeof(double), self);
+          }, "the size drawn for each shape (on its template's size_on dimension), n")
+      .def_property_readonly("template_ids", [](py::object self) {
+            const PyPacking& p = self.cast<const PyPacking&>();
+            if (!p.in().shapes) throw py::attribute_error("a packing of spheres has no templates");
+            return view(p.template_ids.data(), p.size(), 0, sizeof(std::int32_t), self);
+          }, "each shape's particle template (index into template_names), n")
+      .def_property_readonly("template_names", [](const PyPacking& p) {
+            const PackingInput& in = p.in();
+            return in.dimension == 2 ? in.shapes2.template_names : in.shapes3.template_names;
+          })
+      .def_property_readonly("record", [](const PyPacking& p) { return json_loads(run_record_json(p.run.record)); },
+                             "the run record (as `frontpack pack --record` writes it), the analysis under 'analysis'")
+      .def_property_readonly("analysis", [](const PyPacking& p) { return json_loads(p.run.record.analysis_json); },
+                             "the full analysis of the packing in its scene (as `frontpack analyze --json` gives it)")
+      .def_property_readonly("valid", [](const PyPacking& p) { return p.run.valid; },
+                             "the independent validation passed (the command line exits 3 otherwise)")
+      .def_property_readonly("validation", [](const PyPacking& p) { return p.run.validation; })
+      .def_property_readonly("summary", [](const PyPacking& p) { return p.run.summary; },
+                             "the analysis and packer lines of the command line's summary")
+      .def_property_readonly("scene_path", [](const PyPacking& p) { return p.in().scene->source_path; })
+      .def("write", &write_file, py::arg("path"), py::arg("format") = "",
+           "writes the packing (vtu, yade, lammps, csv, json; default: from the extension), all or nothing")
+      .def("__repr__", [](const PyPacking& p) {
+        return "<frontpack.Packing: " + std::to_string(p.size()) + (p.in().shapes ? " shapes" : " spheres") + ", " +
+               std::to_string(p.in().dimension) + "D, scene " + p.in().scene->source_path + ">";
+      });
+
+  m.def("pack", &pack, py::arg("scene"), py::kw_only(), py::arg("seed") = py::none(), py::arg("threads") = py::none(),
+        py::arg("progress") = py::none(),
+        "Packs a scene (a path to a scene file, or a dict with its schema) as `frontpack pack` does, without writing "
+        "its outputs. seed, threads: as --seed and -j. progress(n, seconds, volume_fraction) is called about every "
+        "0.5 s; an exception raised in it (or Ctrl-C) stops the run.");
+  m.def(
+      "analyze",
+      [](const PyPacking& p, const py::object& scene, double tolerance, int threads) {
+        const PackingInput in = with_scene(p, scene);
+        std::string text;
+        {
+          const py::gil_scoped_release released;
+          text = analysis_json(analyze_input(in, tolerance, threads));
+        }
+        return json_loads(text);
+      },
+      py::arg("packing"), py::kw_only(), py::arg("scene") = py::none(), py::arg("tolerance") = -1.0, py::arg("threads") = 0,
+      "The analysis of `frontpack analyze PACKING --scene S --json`, as a dict: in the packing's scene, or `scene`.");
+  m.def(
+      "validate",
+      [](const PyPacking& p, const py::object& scene, double tolerance, int threads) {
+        const PackingInput in = with_scene(p, scene);
+        ValidationReport r;
+        {
+          const py::gil_scoped_release released;
+          r = validate_input(in, tolerance, -1.0, threads);
+        }
+        py::dict d = json_loads(validation_json_text(r));
+        d["line"] = r.one_line();
+        d["summary"] = r.summary();
+        return d;
+      },
+      py::arg("packing"), py::kw_only(), py::arg("scene") = py::none(), py::arg("tolerance") = -1.0, py::arg("threads") = 0,
+      "The verdict of `frontpack validate PACKING --scene S`, as a dict: the keys of the analysis' 'validation' "
+      "(ok, overlap_count, outside_count, contacts, max_overlap_rel, ...), its one line and its summary.");
+}
