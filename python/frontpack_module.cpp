@@ -27,6 +27,7 @@
 #include "frontpack/version.hpp"
 #include "shapes/io/shape_packing_writers.hpp"
 #include "shapes/pose.hpp"
+#include "shapes/shape_registry.hpp"
 
 namespace py = pybind11;
 
@@ -209,6 +210,21 @@ PYBIND11_MODULE(frontpack, m) {
                std::to_string(p.in().dimension) + "D, scene " + p.in().scene->source_path + ">";
       });
 
+  m.def(
+      "shape_families",
+      [] {
+        const ShapeFamilies& families = ShapeFamilies::builtin();
+        py::dict out;
+        for (const std::string& name : families.names()) {
+          py::list dims;
+          for (const int d : {2, 3})
+            if (families.in_dimension(name, d)) dims.append(d);
+          out[py::str(name)] = dims;
+        }
+        return out;
+      },
+      "The shape families a scene's `shape:` may name, each with the dimensions it exists in (README: Non-spherical "
+      "particles, for their parameters).");
   m.def("pack", &pack, py::arg("scene"), py::kw_only(), py::arg("seed") = py::none(), py::arg("threads") = py::none(),
         py::arg("progress") = py::none(),
         "Packs a scene (a path to a scene file, or a dict with its schema) as `frontpack pack` does, without writing "

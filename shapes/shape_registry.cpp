@@ -29,6 +29,12 @@ std::vector<std::string> ShapeFamilies::names() const {
   return out;
 }
 
+bool ShapeFamilies::in_dimension(const std::string& name, int dimension) const {
+  const auto f = families_.find(name);
+  if (f == families_.end()) return false;
+  return dimension == 2 ? static_cast<bool>(f->second.in_2d) : dimension == 3 && static_cast<bool>(f->second.in_3d);
+}
+
 template <int D>
 ShapePrototype<D> ShapeFamilies::prototype(const ParticleTemplateSpec& spec) const {
   const ParameterReader reader(spec.parameters);

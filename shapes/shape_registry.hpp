@@ -32,6 +32,8 @@ class ShapeFamilies {
 
   bool has(const std::string& name) const { return families_.count(name) != 0; }
   std::vector<std::string> names() const;
+  /// Whether family `name` exists in dimension `dimension` (2 or 3).
+  bool in_dimension(const std::string& name, int dimension) const;
 
   /// The prototype of a template; throws SceneError (file, line, key) on an unknown family, a
   /// family missing in dimension D, a bad parameter or a size stated on an unknown dimension.

@@ -188,6 +188,20 @@ def test_shapes_have_poses(tmp_path):
     assert len(cli_particles) == n
 
 
+def test_the_shape_families_and_their_dimensions():
+    families = frontpack.shape_families()
+    assert families["sphere"] == [2, 3] and families["ellipse"] == [2] and families["polyhedron"] == [3]
+    for name, dims in families.items():
+        scene = {"dimension": dims[0], "container": {"type": "box" if dims[0] == 3 else "rectangle",
+                                                     "min": [0] * dims[0], "max": [1] * dims[0]},
+                 "particles": [{"shape": name, "size": {"distribution": "constant", "value": 0.1}}],
+                 "stop": {"particles": 20}}
+        try:
+            assert len(frontpack.pack(scene, threads=1)) == 20
+        except frontpack.SceneError as e:  # a family that needs parameters says which
+            assert "particles[0]" in str(e), str(e)
+
+
 def test_a_large_packing_is_returned_without_copies():
     big = dict(BOX, container={"type": "box", "min": [0, 0, 0], "max": [1.5, 1.5, 1.5]})
     start = time.perf_counter()
