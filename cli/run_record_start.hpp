@@ -25,6 +25,7 @@ RunRecord start_run_record(const Scene& scene, const Container<D>& container, st
   rec.scene_path = scene.source_path;
   rec.scene_text = scene.source_text;
   rec.seed = scene.seed;
+  rec.density = scene.density;
   rec.dimension = D;
   rec.n = n;
   rec.container_description = container.describe();

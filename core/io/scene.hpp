@@ -277,6 +277,10 @@ struct Scene {
   /// a fill with a phi0 of its own (tet_mesh, the void filling) stops at it.
   std::optional<double> target_solid_fraction;
   std::vector<RegionSpec> regions;        ///< method tet_mesh: physical volumes with laws of their own
+  /// `material: {density}`: the particles' material density, mass per unit volume of the scene's
+  /// length unit (2D too: LAMMPS takes a disk's mass as a sphere's); written into the LAMMPS data
+  /// files and the record. Default: quartz sand in SI units (kg/m^3).
+  double density = 2650.0;
   std::vector<OutputSpec> outputs;
   /// Every file the scene was read from (itself, a mesh): no output may replace them.
   std::vector<std::string> read_files;

@@ -1180,7 +1180,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
     const Map root(ctx, doc, "", doc.Mark().is_null() ? start : doc.Mark());
     root.check_known(
         {"dimension", "seed", "container", "particles", "packer", "stop", "target", "densify", "least_squares", "regions",
-         "output"});
+         "material", "output"});
     const Value dim = root.get("dimension", "2 or 3");
     const std::uint64_t d = dim.unsigned_integer();
     if (d != 2 && d != 3) dim.fail("must be 2 or 3 (got " + dim.node().Scalar() + ")");
@@ -1207,6 +1207,14 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
       root.find("packer")->map().find("method")->fail(
           "the graded stacking (paper 003) places a list of particles made from the gradation and a target: give "
           "'target: {solid_fraction | porosity | void_ratio: ...}' (the list's solid) or 'stop: {particles: N}'");
+    if (auto m = root.find("material")) {
+      const Map material = m->map();
+      material.check_known({"density"});
+      const Value rho = material.get("density", "the particles' material density (mass per unit volume)");
+      scene.density = rho.number();
+      if (!(scene.density > 0) || !std::isfinite(scene.density))
+        rho.fail("must be a positive number: mass per unit volume of the scene's length unit (got " + rho.node().Scalar() + ")");
+    }
     if (auto o = root.find("output")) scene.outputs = parse_outputs(*o);
   } catch (const YAML::Exception& e) {  // not expected: every access is checked first
     ctx.fail(e.mark, "", e.msg);

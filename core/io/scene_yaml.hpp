@@ -51,6 +51,7 @@
 //       max_evaluations: integer >= 10;  polish: bool
 //   stop:
 //     particles: integer > 0 (1e6 accepted);  volume_fraction: in (0, 1);  time: seconds > 0
+//   material: {density: mass per unit volume, > 0 (default 2650: quartz, SI)}  (the LAMMPS data files)
 //   output: list of {format: vtu | yade | lammps | csv | json (default: from the path's
 //           extension), path*: relative to the working directory}
 #include <cstddef>

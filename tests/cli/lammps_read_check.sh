@@ -2,7 +2,8 @@
 # The real consumer of the LAMMPS data files: Debian's LAMMPS (`lmp`) reads what `frontpack pack`
 # writes, 3D and 2D, from the single front, from threads and (with MPIEXEC, a FRONTPACK_MPI
 # build) from `mpirun -np 2`, and runs granular steps without gravity: every atom stays in the
-# box and nothing moves (largest displacement <= 1e-9 r_min: no overlap to push apart). A copy
+# box and nothing moves (largest displacement <= 1e-9 r_min: no overlap to push apart); the masses
+# LAMMPS computes are the file's density (the scene's material) x 4/3 pi r^3. A copy
 # with one diameter grown by 10 % must move (the check can fail). Exit 77 (skipped) without lmp.
 # Usage: lammps_read_check.sh FRONTPACK [MPIEXEC]
 set -eu
@@ -69,6 +70,37 @@ for s in s3 s2; do
     check $s-np2.data $dim $rmin "$s mpirun -np 2"
   fi
 done
+
+# Masses: LAMMPS takes each atom's mass as density x 4/3 pi r^3 from the file (2D too: a disk's
+# mass is a sphere's there); the total it reads must be the file's, and the density the scene's
+# material (default 2650).
+mass_check() {  # mass_check DATA DIM DENSITY
+  if [ "$2" = 2 ]; then head='dimension 2
+boundary f f p'; else head='boundary f f f'; fi
+  cat > mass.lmp <<L
+$head
+atom_style sphere
+read_data $1
+compute m all property/atom mass
+compute total all reduce sum c_m
+thermo_style custom step c_total
+thermo_modify format float %.15g norm no
+run 0
+L
+  lmp -in mass.lmp -log none -echo none > mass.out 2>&1 || { echo "FAIL: lmp could not read $1"; cat mass.out; exit 1; }
+  got=$(awk '$1 == "0" && NF == 2 {print $2}' mass.out | tail -1)
+  awk -v got="$got" -v rho="$3" '/^Atoms/ {on = 1; next} on && NF >= 7 {
+      if ($4 != rho) {print "FAIL: density " $4 " in the file, not " rho; bad = 1; exit 1}
+      m += $4 * 4 / 3 * 3.141592653589793 * ($3 / 2) ^ 3 }
+    END {if (bad) exit 1; rel = (got - m) / m; if (rel < 0) rel = -rel
+         if (!(rel < 1e-12)) {print "FAIL: LAMMPS mass " got ", the file " m; exit 1}}' "$1" || exit 1
+  echo "$1: LAMMPS mass $got = the file's density x volume (density $3)"
+}
+mass_check s3-front.data 3 2650
+mass_check s2-front.data 2 2650
+printf 'material: {density: 7850}\n' | cat s3-front.yaml - > steel.yaml
+"$fp" pack steel.yaml -q -o steel.data
+mass_check steel.data 3 7850
 
 # The control: one sphere grown by 10 % overlaps its neighbours, and LAMMPS pushes them apart.
 awk '/^Atoms/ {on = 1; print; next} on && NF >= 7 && !done {$3 = $3 * 1.1; done = 1} {print}' s3-front.data > grown.data

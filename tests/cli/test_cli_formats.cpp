@@ -189,6 +189,36 @@ TEST(CliFormats, FormatFromTheExtension) {
   EXPECT_EQ(read_bytes(dir.work() / "out.vtu").rfind("<?xml", 0), 0u);
 }
 
+/// `material: {density}` is the density column of the LAMMPS data file and the record's
+/// density (default 2650, quartz in SI units); a bad one is refused, naming the key.
+TEST(CliFormats, TheLammpsDensityIsTheScenesMaterial) {
+  TempDir dir;
+  write_bytes(dir.work() / "plain.yaml", kScene3D);
+  write_bytes(dir.work() / "steel.yaml", std::string(kScene3D) + "material: {density: 7850}\n");
+  for (const auto& [name, density] : {std::pair<std::string, double>{"plain", 2650.0}, {"steel", 7850.0}}) {
+    SCOPED_TRACE(name);
+    const RunResult r = run_frontpack(dir, "pack " + name + ".yaml -q -o " + name + ".data --record " + name + ".json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto lines = lines_of(read_bytes(dir.work() / (name + ".data")));
+    int atoms = 0;
+    bool in_atoms = false;
+    for (const std::string& l : lines) {
+      if (l.rfind("Atoms", 0) == 0) in_atoms = true;
+      std::vector<double> v;
+      if (!in_atoms || l.empty() || !parse_numbers(l, ' ', v) || v.size() != 7) continue;
+      EXPECT_EQ(v[3], density) << l;
+      ++atoms;
+    }
+    EXPECT_GT(atoms, 100);
+    EXPECT_EQ(record_number(read_bytes(dir.work() / (name + ".json")), "density"), density);
+  }
+  expect_refused(dir, std::string(kScene3D) + "material: {density: 0}\n", "material.density");
+  expect_refused(dir, std::string(kScene3D) + "material: {density: -1}\n", "must be a positive number");
+  expect_refused(dir, std::string(kScene3D) + "material: {density: .nan}\n", "material.density");
+  expect_refused(dir, std::string(kScene3D) + "material: {rho: 2}\n", "material.rho");
+  expect_refused(dir, std::string(kScene3D) + "material: {}\n", "material.density");
+}
+
 TEST(CliFormats, SameSeedSameBytesOtherSeedOtherBytes) {
   TempDir dir;
   write_bytes(dir.work() / "scene.yaml", kScene3D);
