@@ -146,7 +146,9 @@ class Stacker {
   /// surface first) and the container's walls within reach.
   void gather(int b, double r) {
     const Vec<D>& c = P_.centers[b];
-    const double rb = P_.radii[b], reach = rb + 2 * r * (1 + 1e-6);  // a margin over the solver's rounding: see acceptable()
+    // A margin over the solver's rounding: acceptable() takes this list as every ball a
+    // position touching b can overlap.
+    const double rb = P_.radii[b], reach = rb + 2 * r * (1 + 1e-6);
     near_.clear();
     grid_.for_each_within(c, reach, [&](int id, const Vec<D>&, double rk, double d2) {
       if (id != b) near_.push_back({std::sqrt(d2) - rk, id});
