@@ -223,7 +223,7 @@ Packing<D> read_lammps(const std::string& path, const Vec<D>& origin) {
   std::string_view line;
   if (!lines.next(line)) lines.fail("empty file");  // first line: the title, always skipped
   std::optional<std::int64_t> n_atoms;
-  bool in_atoms = false;
+  bool in_atoms = false, hybrid = false;  // hybrid: the shape writers' clumps (atom_style hybrid sphere bond)
   while (lines.next(line)) {
     const std::string_view body = strip_comment(line);
     if (body.empty()) continue;
@@ -237,14 +237,16 @@ Packing<D> read_lammps(const std::string& path, const Vec<D>& origin) {
       const std::size_t hash = line.find('#');
       if (hash != std::string_view::npos) {
         const std::string_view style = trim(line.substr(hash + 1));
-        if (style != "sphere") lines.fail("Atoms section of style '" + std::string(style) + "', expected 'sphere'");
+        if (style != "sphere" && style != "hybrid")
+          lines.fail("Atoms section of style '" + std::string(style) + "', expected 'sphere' (or 'hybrid': sphere bond)");
+        hybrid = style == "hybrid";
       }
       in_atoms = true;
       break;
     }
     if (std::isalpha(static_cast<unsigned char>(f[0][0]))) lines.fail("section '" + std::string(body) + "' before the Atoms section is not supported");
   }
-  if (!in_atoms) lines.fail("no 'Atoms # sphere' section");
+  if (!in_atoms) lines.fail("no 'Atoms # sphere' (or '# hybrid') section");
   if (!n_atoms) lines.fail("the header does not give the number of atoms ('N atoms')");
   ById<D> rows(1);
   std::int64_t read = 0;
@@ -252,14 +254,19 @@ Packing<D> read_lammps(const std::string& path, const Vec<D>& origin) {
     const std::string_view body = strip_comment(line);
     if (body.empty()) continue;
     const auto f = split(body, ' ');
-    // id type diameter density x y z [ix iy iz]
-    if (f.size() != 7 && f.size() != 10)
+    // sphere: id type diameter density x y z [ix iy iz]; hybrid sphere bond: id type x y z
+    // diameter density molecule [ix iy iz]
+    if (!hybrid && f.size() != 7 && f.size() != 10)
       lines.fail("expected 'id type diameter density x y z' (atom_style sphere), got " + std::to_string(f.size()) + " columns");
+    if (hybrid && f.size() != 8 && f.size() != 11)
+      lines.fail("expected 'id type x y z diameter density molecule' (atom_style hybrid sphere bond), got " +
+                 std::to_string(f.size()) + " columns");
     const auto id = parse_number<std::int64_t>(f[0]);
     if (!id) lines.fail("expected an integer atom id, got '" + std::string(f[0]) + "'");
-    const double diameter = number_or_fail(lines, f[2], "the diameter");
-    const double xyz[3] = {coordinate_or_fail(lines, f[4], axes[0], "x"), coordinate_or_fail(lines, f[5], axes[1], "y"),
-                           coordinate_or_fail(lines, f[6], axes[2], "z")};
+    const std::size_t at_x = hybrid ? 2 : 4;
+    const double diameter = number_or_fail(lines, f[hybrid ? 5 : 2], "the diameter");
+    const double xyz[3] = {coordinate_or_fail(lines, f[at_x], axes[0], "x"), coordinate_or_fail(lines, f[at_x + 1], axes[1], "y"),
+                           coordinate_or_fail(lines, f[at_x + 2], axes[2], "z")};
     rows.add(lines, *id, center_from<D>(lines, xyz), 0.5 * diameter);
     ++read;
   }

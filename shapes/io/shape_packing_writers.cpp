@@ -497,9 +497,10 @@ void write_lammps(std::ostream& data, std::ostream& clumps, const std::string& p
   const auto axes = offset_axes(p.origin.data(), D);
 
   TextBuffer b(data);
-  b.text("LAMMPS data file (atom_style sphere) written by ").text(producer(rec)).text(", ");
-  b.text(D == 2 ? "2D (use 'dimension 2')" : "3D").text(", columns: id type diameter density x y z").ch('\n');
-  b.text("# each atom is a member ball of a clump (multisphere); the clumps are listed in '").text(companion);
+  b.text("LAMMPS data file (atom_style hybrid sphere bond) written by ").text(producer(rec)).text(", ");
+  b.text(D == 2 ? "2D (use 'dimension 2')" : "3D").text(", columns: id type x y z diameter density molecule").ch('\n');
+  b.text("# each atom is a member ball of a clump: molecule = clump id + 1, so that 'fix rigid/small molecule' runs the");
+  b.text(" clumps as they are (README); the clumps are also listed in '").text(companion);
   b.text("': atoms come in clump order (clump 0's members first), type = shape_id + 1 (particle template)").ch('\n');
   b.ch('\n');
   b.integer(n_balls).text(" atoms").ch('\n');
@@ -509,12 +510,12 @@ void write_lammps(std::ostream& data, std::ostream& clumps, const std::string& p
   for (int k = 0; k < 3; ++k)
     b.coordinate(lo[k], axes[k]).ch(' ').coordinate(hi[k], axes[k]).ch(' ').text(axis[k]).text("lo ").text(axis[k]).text("hi").ch('\n');
   b.ch('\n');
-  b.text("Atoms # sphere").ch('\n');
+  b.text("Atoms # hybrid").ch('\n');
   b.ch('\n');
 
   TextBuffer m(clumps);
   m.text("# ").text(producer(rec)).text(" multisphere listing: the clumps of '").text(file_name(path));
-  m.text("' (LAMMPS/LIGGGHTS data file, atom_style sphere), ").integer(D).text("D").ch('\n');
+  m.text("' (LAMMPS data file, atom_style hybrid sphere bond), ").integer(D).text("D").ch('\n');
   m.text("# ").integer(static_cast<std::int64_t>(p.size())).text(" clumps, ").integer(n_balls).text(" member balls").ch('\n');
   m.text("# per clump one line: clump_id member_count shape_id x y z qw qx qy qz").ch('\n');
   m.text("#   clump_id = particle id (0-based), shape_id = atom type - 1, (x y z) = clump reference point in the world,")
@@ -540,8 +541,9 @@ void write_lammps(std::ostream& data, std::ostream& clumps, const std::string& p
       const Vec3 body = embed<D>(ball.center);
       m.number(body.x()).ch(' ').number(body.y()).ch(' ').number(body.z()).ch(' ').number(ball.radius).ch('\n');
       const Vec3 c = embed<D>(q.pose.to_world(ball.center));
-      b.integer(++atom).ch(' ').integer(q.template_id + 1).ch(' ').number(2.0 * ball.radius).ch(' ').number(rec.density);
+      b.integer(++atom).ch(' ').integer(q.template_id + 1);
       for (int k = 0; k < 3; ++k) b.ch(' ').coordinate(c[k], axes[k]);
+      b.ch(' ').number(2.0 * ball.radius).ch(' ').number(rec.density).ch(' ').integer(static_cast<std::int64_t>(i) + 1);
       b.ch('\n');
     }
   }

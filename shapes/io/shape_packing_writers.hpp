@@ -43,9 +43,10 @@
 // * yade (spheres and clusters only): YADE's ymport.textClumps layout, "#format
 //   x_y_z_r_clumpId", a '#' line explaining the columns, then one line "x y z r clump_id" per
 //   member ball (world centre; clump_id = particle id; a sphere is a clump of one).
-// * lammps (spheres and clusters only): a LAMMPS/LIGGGHTS data file, atom_style sphere, one
-//   atom per member ball ("id type diameter density x y z", type = shape_id + 1, density =
-//   record.density), atoms in clump order; box as core/io/packing_writers.hpp. Companion
+// * lammps (spheres and clusters only): a LAMMPS data file, atom_style hybrid sphere bond, one
+//   atom per member ball ("id type x y z diameter density molecule", type = shape_id + 1,
+//   density = record.density, molecule = clump id + 1: `fix rigid/small molecule` runs the
+//   clumps as written), atoms in clump order; box as core/io/packing_writers.hpp. Companion
 //   "<stem>.multisphere.txt" (multisphere_path()): per clump a line
 //   "clump_id member_count shape_id x y z qw qx qy qz" (clump reference point in the world and
 //   its rotation), then member_count lines "x y z r" (member centre in the clump's body frame:

@@ -3,7 +3,8 @@
 # writes, 3D and 2D, from the single front, from threads and (with MPIEXEC, a FRONTPACK_MPI
 # build) from `mpirun -np 2`, and runs granular steps without gravity: every atom stays in the
 # box and nothing moves (largest displacement <= 1e-9 r_min: no overlap to push apart); the masses
-# LAMMPS computes are the file's density (the scene's material) x 4/3 pi r^3. A copy
+# LAMMPS computes are the file's density (the scene's material) x 4/3 pi r^3; clusters run as
+# rigid clumps (fix rigid/small molecule) as written. A copy
 # with one diameter grown by 10 % must move (the check can fail). Exit 77 (skipped) without lmp.
 # Usage: lammps_read_check.sh FRONTPACK [MPIEXEC]
 set -eu
@@ -101,6 +102,63 @@ mass_check s2-front.data 2 2650
 printf 'material: {density: 7850}\n' | cat s3-front.yaml - > steel.yaml
 "$fp" pack steel.yaml -q -o steel.data
 mass_check steel.data 3 7850
+
+# Clumps (clusters of spheres): the data file gives each member its clump as molecule id, and
+# the README's input runs them with fix rigid/small molecule as written: LAMMPS finds one rigid
+# body per clump with every member, and 1,000 steps without gravity move nothing (no overlap).
+clumps_check() {  # clumps_check DIM
+  if [ "$1" = 3 ]; then
+    box='{type: box, min: [0, 0, 0], max: [6, 6, 6]}'; centers='[[-0.5, 0, 0], [0.5, 0, 0], [0.5, 0.8, 0]]'
+    head='boundary f f f'; fixes='fix 1 all rigid/small molecule'
+  else
+    box='{type: rectangle, min: [0, 0], max: [20, 20]}'; centers='[[-0.5, 0], [0.5, 0], [0.5, 0.8]]'
+    head='dimension 2
+boundary f f p'; fixes='fix 1 all rigid/small molecule
+fix 2 all enforce2d'
+  fi
+  cat > clumps$1.yaml <<Y
+dimension: $1
+seed: 3
+container: $box
+particles:
+  - shape: cluster
+    centers: $centers
+    radii: [0.5, 0.5, 0.4]
+    size: {distribution: uniform, min: 0.5, max: 1}
+stop: {particles: 150}
+Y
+  "$fp" pack clumps$1.yaml -q -o clumps$1.data
+  atoms=$(awk '/^Atoms/ {on = 1; next} on && NF >= 8 {c++} END {print c + 0}' clumps$1.data)
+  clumps=$(awk '/^Atoms/ {on = 1; next} on && NF >= 8 && $8 > m {m = $8} END {print m + 0}' clumps$1.data)
+  [ "$clumps" = 150 ] || { echo "FAIL: ${1}D clumps: $clumps clumps in the file, the scene asks 150"; exit 1; }
+  cat > clumps.lmp <<L
+$head
+atom_style hybrid sphere bond
+read_data clumps$1.data
+pair_style gran/hooke 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+comm_modify vel yes
+neigh_modify exclude molecule/intra all
+$fixes
+compute d all displace/atom
+compute dmax all reduce max c_d[4]
+thermo_style custom step atoms c_dmax
+thermo_modify format float %.6g lost error
+thermo 1000
+timestep 1e-5
+run 1000
+L
+  lmp -in clumps.lmp -log none -echo none > clumps.out 2>&1 || { echo "FAIL: lmp could not run clumps$1.data"; cat clumps.out; exit 1; }
+  bodies=$(sed -n 's/^ *\([0-9]*\) rigid bodies with \([0-9]*\) atoms$/\1 \2/p' clumps.out | head -1)
+  [ "$bodies" = "150 $atoms" ] || { echo "FAIL: ${1}D clumps: LAMMPS made '$bodies' (rigid bodies, atoms) of 150 clumps, $atoms atoms"; cat clumps.out; exit 1; }
+  last=$(awk '$1 == "1000" && NF == 3 {print $2, $3}' clumps.out | tail -1)
+  set -- "$1" $last
+  [ "$2" = "$atoms" ] && awk -v d="$3" 'BEGIN {exit !(d <= 1e-9 * 0.2)}' ||
+    { echo "FAIL: ${1}D clumps after 1,000 steps: '$last' (atoms, largest displacement)"; exit 1; }
+  echo "${1}D clumps: 150 rigid bodies of $atoms atoms, 1,000 steps, largest displacement $3"
+}
+clumps_check 3
+clumps_check 2
 
 # The control: one sphere grown by 10 % overlaps its neighbours, and LAMMPS pushes them apart.
 awk '/^Atoms/ {on = 1; print; next} on && NF >= 7 && !done {$3 = $3 * 1.1; done = 1} {print}' s3-front.data > grown.data

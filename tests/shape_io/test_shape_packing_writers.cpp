@@ -749,15 +749,18 @@ void check_lammps() {
   EXPECT_NE(text.find("\n" + std::to_string(members) + " atoms\n"), std::string::npos);
   EXPECT_NE(text.find("\n2 atom types\n"), std::string::npos);
   EXPECT_NE(text.find("c.multisphere.txt"), std::string::npos);
+  EXPECT_NE(text.find("\nAtoms # hybrid\n"), std::string::npos);
   std::vector<int> types;
+  std::vector<long long> molecules;
   bool in_atoms = false;
   for (const auto& line : lines_of(text)) {
     if (line.rfind("Atoms", 0) == 0) in_atoms = true;
     else if (in_atoms && !line.empty()) {
-      const auto f = split(line, ' ');
-      ASSERT_EQ(f.size(), 7u);
+      const auto f = split(line, ' ');  // id type x y z diameter density molecule
+      ASSERT_EQ(f.size(), 8u);
       types.push_back(static_cast<int>(integer(f[1])));
-      EXPECT_EQ(num(f[3]), 2500.0);
+      EXPECT_EQ(num(f[6]), 2500.0);
+      molecules.push_back(integer(f[7]));
     }
   }
   ASSERT_EQ(types.size(), members);
@@ -794,6 +797,7 @@ void check_lammps() {
       for (int k = 0; k < D; ++k) EXPECT_EQ(atoms.centers[atom][k], world[k]);
       EXPECT_EQ(atoms.radii[atom], ball.radius);
       EXPECT_EQ(types[atom], q.template_id + 1);
+      EXPECT_EQ(molecules[atom], static_cast<long long>(i) + 1) << "molecule = clump id + 1";
       EXPECT_LT((x + R * body - embed<D>(world)).norm(), 1e-12 * (x.norm() + 1));
       ++atom;
     }
