@@ -119,11 +119,18 @@ std::shared_ptr<PyPacking> pack(const py::object& source, std::optional<std::uin
   return out;
 }
 
-/// The packing's scene: the one it was packed in, or `scene` (a path or dict) given instead.
-PackingInput with_scene(const PyPacking& p, const py::object& scene) {
+/// f(the packing in its scene): the one it was packed in, or `scene` (a path or dict) given
+/// instead (then on a copy of the particles, which carry their scene), without the GIL.
+template <class F>
+auto in_scene(const PyPacking& p, const py::object& scene, F&& f) {
+  if (scene.is_none()) {
+    const py::gil_scoped_release released;
+    return f(p.in());
+  }
   PackingInput in = p.in();
-  if (!scene.is_none()) in.scene = scene_from(scene);
-  return in;
+  in.scene = scene_from(scene);
+  const py::gil_scoped_release released;
+  return f(in);
 }
 
 void write_file(const PyPacking& p, const std::string& path, const std::string& format) {
@@ -233,25 +240,17 @@ PYBIND11_MODULE(frontpack, m) {
   m.def(
       "analyze",
       [](const PyPacking& p, const py::object& scene, double tolerance, int threads) {
-        const PackingInput in = with_scene(p, scene);
-        std::string text;
-        {
-          const py::gil_scoped_release released;
-          text = analysis_json(analyze_input(in, tolerance, threads));
-        }
-        return json_loads(text);
+        return json_loads(in_scene(p, scene, [&](const PackingInput& in) {
+          return analysis_json(analyze_input(in, tolerance, threads));
+        }));
       },
       py::arg("packing"), py::kw_only(), py::arg("scene") = py::none(), py::arg("tolerance") = -1.0, py::arg("threads") = 0,
       "The analysis of `frontpack analyze PACKING --scene S --json`, as a dict: in the packing's scene, or `scene`.");
   m.def(
       "validate",
       [](const PyPacking& p, const py::object& scene, double tolerance, int threads) {
-        const PackingInput in = with_scene(p, scene);
-        ValidationReport r;
-        {
-          const py::gil_scoped_release released;
-          r = validate_input(in, tolerance, -1.0, threads);
-        }
+        const ValidationReport r =
+            in_scene(p, scene, [&](const PackingInput& in) { return validate_input(in, tolerance, -1.0, threads); });
         py::dict d = json_loads(validation_json_text(r));
         d["line"] = r.one_line();
         d["summary"] = r.summary();
