@@ -184,7 +184,7 @@ int run_analyze_command(const AnalyzeCommandOptions& o) {
         writes.push_back({(std::filesystem::path(o.plots_dir) / name).string(), "option --plots", "figure"});
     }
     check_output_paths(writes, {});  // before reading: a bad path is refused at once
-    in = read_packing_input(o.packing_path, o.format, o.scene_path, /*shapes_too=*/true);
+    in = read_packing_input(o.packing_path, o.format, o.scene_path, /*shapes_too=*/true, o.scene_overrides);
     std::vector<NamedPath> reads = {{o.packing_path, "argument PACKING", "packing file"}};
     if (in.scene)
       for (const NamedPath& r : scene_reads(*in.scene, "option --scene")) reads.push_back(r);

@@ -3,12 +3,16 @@
 // core/metrics/packing_analysis.hpp, as a table, as JSON, and as PNG figures drawn by
 // python/plot_analysis.py (Debian's python3-matplotlib).
 #include <string>
+#include <vector>
+
+#include "core/io/scene_override.hpp"
 
 namespace fp {
 
 struct AnalyzeCommandOptions {
   std::string packing_path;
   std::string scene_path;   ///< optional: container, requested distribution, contact tolerance
+  std::vector<SceneOverride> scene_overrides;  ///< --set KEY=VALUE, in order
   std::string format;       ///< of PACKING; default from its extension
   std::string json_path;    ///< --json
   std::string plots_dir;    ///< --plots (must exist)

@@ -12,11 +12,14 @@
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "cli/analyze_command.hpp"
 #include "cli/failure_report.hpp"
 #include "cli/pack_command.hpp"
+#include "cli/study_command.hpp"
 #include "cli/validate_command.hpp"
+#include "core/io/scene_override.hpp"
 #include "core/io/temp_file_registry.hpp"
 #include "frontpack/version.hpp"
 #ifdef FRONTPACK_WITH_MPI
@@ -60,6 +63,29 @@ void add_output_options(CLI::App* cmd, fp::PackCommandOptions& o, std::string& s
   cmd->add_flag("-q,--quiet", o.quiet, "no summary on stdout");
 }
 
+/// --set KEY=VALUE, repeatable: a change to the scene as it is read (core/io/scene_override.hpp).
+void add_set_option(CLI::App* cmd, std::vector<fp::SceneOverride>& overrides) {
+  const CLI::Validator key_equals_value(
+      [](const std::string& v) {
+        try {
+          fp::scene_override_argument(v);
+        } catch (const std::invalid_argument& e) {
+          return std::string(e.what());
+        }
+        return std::string();
+      },
+      "KEY=VALUE");
+  cmd->add_option_function<std::vector<std::string>>(
+         "--set",
+         [&overrides](const std::vector<std::string>& args) {
+           for (const auto& a : args) overrides.push_back(fp::scene_override_argument(a));
+         },
+         "change the scene as it is read: a dotted key and a YAML value (packer.front=fifo, particles.radius.max=0.5, "
+         "container.max=[2,2,2]); repeatable, applied in order")
+      ->allow_extra_args(false)
+      ->check(key_equals_value);
+}
+
 int run(int argc, char** argv) {
   CLI::App app{"frontpack: dense packings of spheres and disks by the advancing front"};
   app.set_version_flag("--version", std::string("frontpack ") + fp::kVersion);
@@ -83,6 +109,7 @@ int run(int argc, char** argv) {
       },
       "UINT64");
   add_output_options(pack_cmd, pack, seed_text, decimal_seed);
+  add_set_option(pack_cmd, pack.scene_overrides);
   pack_cmd->add_option("-j,--threads", pack.threads,
                        "threads (0: every hardware thread; replaces the scene's packer.threads). Above 1 the "
                        "container grows in blocks, with the same output for every thread count; the validation and analysis "
@@ -93,9 +120,9 @@ int run(int argc, char** argv) {
   // CLI11 would answer "A subcommand is required" to a mistyped command.
   const std::string command = argc > 1 ? argv[1] : "";
   if (!command.empty() && command[0] != '-' && command != "pack" && command != "densify" && command != "validate" &&
-      command != "analyze") {
+      command != "analyze" && command != "study") {
     std::cerr << "frontpack: error: unknown command '" << command
-              << "' (commands: pack, densify, validate, analyze; see frontpack --help)\n";
+              << "' (commands: pack, densify, validate, analyze, study; see frontpack --help)\n";
     return 2;
   }
   fp::PackCommandOptions densify;
@@ -105,6 +132,7 @@ int run(int argc, char** argv) {
   densify_cmd->add_option("--scene", densify.scene_path, "the scene it fills: container, radii, `densify:` options")->required();
   densify_cmd->add_option("--input-format", densify.input_format, "format of PACKING (default: from its extension)");
   add_output_options(densify_cmd, densify, seed_text, decimal_seed);
+  add_set_option(densify_cmd, densify.scene_overrides);
   densify_cmd->add_option("-j,--threads", densify.threads, "threads of the validation and analysis (0: every hardware thread)")
       ->check(CLI::Range(0, 4096));
 
@@ -113,6 +141,7 @@ int run(int argc, char** argv) {
       "validate", "check a packing file against its scene: no overlap, every particle inside, the radii");
   validate_cmd->add_option("packing", check.packing_path, "packing file (vtu, yade, lammps, csv or json)")->required();
   validate_cmd->add_option("--scene", check.scene_path, "the scene the packing fills")->required();
+  add_set_option(validate_cmd, check.scene_overrides);
   validate_cmd->add_option("--format", check.format, "format of PACKING (default: from its extension)");
   validate_cmd->add_option("--tolerance", check.tolerance,
                            "overlap allowed, relative to the smaller radius of each pair (default: the scene's contact_tolerance)")
@@ -132,6 +161,7 @@ int run(int argc, char** argv) {
   analyze_cmd->add_option("--scene", an.scene_path,
                           "the scene it fills: container, requested radii, contact tolerance (default: the "
                           "particles' bounding box, no distribution)");
+  add_set_option(analyze_cmd, an.scene_overrides);
   analyze_cmd->add_option("--format", an.format, "format of PACKING (default: from its extension)");
   analyze_cmd->add_option("--json", an.json_path, "write every figure as JSON to OUT");
   analyze_cmd->add_option("--plots", an.plots_dir, "draw PNG figures into DIR (needs python3-matplotlib)");
@@ -142,6 +172,18 @@ int run(int argc, char** argv) {
                           "threads (default 0: every hardware thread); the figures are the same for every count")
       ->check(CLI::Range(0, 4096));
   analyze_cmd->add_flag("-q,--quiet", an.quiet, "no table");
+
+  std::string study_path;
+  fp::StudyOptions study;
+  bool no_plots = false;
+  CLI::App* study_cmd = app.add_subcommand(
+      "study", "pack every run of a study (a base scene, parameters swept, seeds) in parallel processes: one CSV, the figures");
+  study_cmd->add_option("study", study_path, "study file (YAML; README: Comparative studies)")->required();
+  study_cmd->add_option("-J,--jobs", study.jobs, "runs at once (replaces the study's jobs; default: hardware threads / threads)")
+      ->check(CLI::Range(1, 1024));
+  study_cmd->add_flag("--no-plots", no_plots, "the CSV only");
+  study_cmd->add_option("--python", study.python, "interpreter with matplotlib (default /usr/bin/python3)");
+  study_cmd->add_flag("-q,--quiet", study.quiet, "no line per run");
 
   try {
     app.parse(argc, argv);
@@ -159,6 +201,13 @@ int run(int argc, char** argv) {
     return fp::run_pack_command(densify);
   }
   if (analyze_cmd->parsed()) return fp::run_analyze_command(an);
+  if (study_cmd->parsed()) {
+    std::error_code ec;
+    study.executable = std::filesystem::read_symlink("/proc/self/exe", ec).string();
+    if (ec) study.executable = argv[0];
+    study.plots = !no_plots;
+    return fp::run_study_command(study_path, study);
+  }
   if (pack_cmd->parsed()) {
     if (!seed_text.empty()) {
       std::uint64_t seed = 0;

@@ -136,10 +136,10 @@ int run_pack_command(const PackCommandOptions& o) {
   try {  // reading and checking what was given: any failure is bad input
     const Activity doing(densify ? "reading packing '" + o.input_path + "'" : "reading scene '" + o.scene_path + "'");
     if (densify) {
-      given = read_packing_input(o.input_path, o.input_format, o.scene_path);  // refuses a scene of shapes
+      given = read_packing_input(o.input_path, o.input_format, o.scene_path, false, o.scene_overrides);  // refuses a scene of shapes
       scene = std::move(*given.scene);
     } else {
-      scene = load_scene(o.scene_path);
+      scene = load_scene(o.scene_path, o.scene_overrides);
     }
     apply_overrides(scene, o);
     // --seed, -j; every shape-specific input problem (family, parameters, output formats) and

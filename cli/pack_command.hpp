@@ -4,6 +4,9 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "core/io/scene_override.hpp"
 
 namespace fp {
 
@@ -11,6 +14,7 @@ class BlockExchange;
 
 struct PackCommandOptions {
   std::string scene_path;
+  std::vector<SceneOverride> scene_overrides;  ///< --set KEY=VALUE, in order
   std::string input_path;              ///< densify: the packing to fill (else the scene is packed)
   std::string input_format;            ///< densify: its format (default: from its extension)
   std::string output_path;             ///< -o: replaces the scene's outputs

@@ -10,9 +10,9 @@
 namespace fp {
 
 PackingInput read_packing_input(const std::string& packing_path, const std::string& format, const std::string& scene_path,
-                                bool shapes_too) {
+                                bool shapes_too, const std::vector<SceneOverride>& overrides) {
   PackingInput in;
-  if (!scene_path.empty()) in.scene = load_scene(scene_path);
+  if (!scene_path.empty()) in.scene = load_scene(scene_path, overrides);
   const OutputFormat f = format.empty() ? format_from_extension(packing_path) : parse_output_format(format);
   if (in.scene && !in.scene->particle_templates.empty()) {
     if (!shapes_too) throw std::runtime_error(scene_path + " describes non-spherical particles: " + kSpheresAndDisksOnly);

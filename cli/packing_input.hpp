@@ -7,6 +7,7 @@
 #include "core/geometry/packing.hpp"
 #include "core/io/output_paths.hpp"
 #include "core/io/scene.hpp"
+#include "core/io/scene_override.hpp"
 #include "shapes/particle.hpp"
 
 namespace fp {
@@ -25,9 +26,10 @@ struct PackingInput {
 /// extension), and checks that their dimensions agree. With a scene of shapes and `shapes_too`,
 /// the packing is read from its json output (the format that carries the shapes); without
 /// `shapes_too` a scene of shapes is refused. Throws std::runtime_error naming the file (and
-/// line, key) on any bad input: the commands report it with exit code 2.
+/// line, key) on any bad input: the commands report it with exit code 2. `overrides` change the
+/// scene as it is read (--set).
 PackingInput read_packing_input(const std::string& packing_path, const std::string& format, const std::string& scene_path,
-                                bool shapes_too = false);
+                                bool shapes_too = false, const std::vector<SceneOverride>& overrides = {});
 
 /// The files `scene` was read from (itself, a mesh), for check_output_paths: no output may
 /// replace them. `named_by` says how the scene was given ("argument SCENE", "option --scene").

@@ -24,6 +24,7 @@ RunRecord start_run_record(const Scene& scene, const Container<D>& container, st
   rec.version = kVersion;
   rec.scene_path = scene.source_path;
   rec.scene_text = scene.source_text;
+  rec.scene_overrides = scene.overrides;
   rec.seed = scene.seed;
   rec.density = scene.density;
   rec.dimension = D;

@@ -69,7 +69,7 @@ int run_validate_command(const ValidateCommandOptions& o) {
   PackingInput in;
   try {
     const Activity doing("reading packing '" + o.packing_path + "'");
-    in = read_packing_input(o.packing_path, o.format, o.scene_path, /*shapes_too=*/true);
+    in = read_packing_input(o.packing_path, o.format, o.scene_path, /*shapes_too=*/true, o.scene_overrides);
   } catch (...) {  // the scene parser and the readers name file, line and key
     return report_failure(2);
   }

@@ -2,14 +2,17 @@
 // `frontpack validate PACKING --scene SCENE`: the independent check of a packing file against the
 // scene it claims to fill (core/metrics/validate: its own cell list, not the packer's grid).
 #include <string>
+#include <vector>
 
 #include "core/metrics/validate.hpp"
+#include "core/io/scene_override.hpp"
 
 namespace fp {
 
 struct ValidateCommandOptions {
   std::string packing_path;
   std::string scene_path;
+  std::vector<SceneOverride> scene_overrides;  ///< --set KEY=VALUE, in order
   std::string format;          ///< --format of PACKING; default from its extension
   double tolerance = -1;       ///< overlap allowance relative to min(ri, rj); < 0: the scene's contact_tolerance
   /// The radii fail when their test's p-value (radii_fit.hpp) is below this; negative: as `pack`

@@ -12,18 +12,23 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <unistd.h>
+
 #include <cstdint>
+#include <cstdlib>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/pack_api.hpp"
+#include "cli/study_command.hpp"
 #include "core/io/analysis_json.hpp"
 #include "core/io/output_format.hpp"
 #include "core/io/packing_writers.hpp"
 #include "core/io/scene_error.hpp"
 #include "core/io/scene_yaml.hpp"
+#include "core/io/study_yaml.hpp"
 #include "frontpack/version.hpp"
 #include "shapes/io/shape_packing_writers.hpp"
 #include "shapes/pose.hpp"
@@ -87,20 +92,35 @@ py::array centers_of(const Packing<D>& P, py::handle owner) {
 
 py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
+std::string json_dumps(const py::object& o) {
+  return py::module_::import("json").attr("dumps")(o, py::arg("indent") = 1).cast<std::string>();
+}
+
+/// `set={"packer.front": "fifo", ...}` as --set changes (values as JSON, a subset of YAML).
+std::vector<SceneOverride> overrides_from(const py::object& changes) {
+  std::vector<SceneOverride> out;
+  if (changes.is_none()) return out;
+  for (const auto& [key, value] : changes.cast<py::dict>()) {
+    const std::string k = py::str(key).cast<std::string>();
+    const std::string v = py::isinstance<py::str>(value) ? value.cast<std::string>() : json_dumps(py::reinterpret_borrow<py::object>(value));
+    SceneOverride o = scene_override_argument(k + "=" + v);  // checks the key's form
+    o.origin.file = "set[" + k + "]";
+    out.push_back(std::move(o));
+  }
+  return out;
+}
+
 /// The scene of `source`: a path (str or os.PathLike) to a scene file, or a dict with the scene
 /// file's schema (given to the parser as JSON, a subset of YAML; messages name its dotted keys).
-Scene scene_from(const py::object& source) {
-  if (py::isinstance<py::dict>(source)) {
-    const std::string text = py::module_::import("json").attr("dumps")(source, py::arg("indent") = 1).cast<std::string>();
-    return parse_scene(text, "<dict>");
-  }
+Scene scene_from(const py::object& source, const std::vector<SceneOverride>& changes = {}) {
+  if (py::isinstance<py::dict>(source)) return parse_scene(json_dumps(source), "<dict>", changes);
   const std::string path = py::module_::import("os").attr("fspath")(source).cast<std::string>();
-  return load_scene(path);
+  return load_scene(path, changes);
 }
 
 std::shared_ptr<PyPacking> pack(const py::object& source, std::optional<std::uint64_t> seed, std::optional<int> threads,
-                                py::object progress) {
-  Scene scene = scene_from(source);
+                                py::object progress, const py::object& changes) {
+  Scene scene = scene_from(source, overrides_from(changes));
   prepare_scene(scene, seed, threads);
   ProgressFn fn;
   if (!progress.is_none())
@@ -142,6 +162,69 @@ void write_file(const PyPacking& p, const std::string& path, const std::string& 
   } else {
     in.dimension == 2 ? write_packing<2>(f, path, in.packing2, p.run.record) : write_packing<3>(f, path, in.packing3, p.run.record);
   }
+}
+
+/// A CSV cell as Python: a number, a flag, or the text.
+py::object cell(const std::string& text) {
+  if (text == "true" || text == "false") return py::bool_(text == "true");
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (!text.empty() && end == text.c_str() + text.size()) {
+    if (text.find_first_of(".eEn") == std::string::npos && text.size() < 19) return py::int_(std::stoll(text));
+    return py::float_(v);
+  }
+  return py::str(text);
+}
+
+py::dict row_dict(const StudyRow& row) {
+  py::dict d;
+  for (const auto& k : row.keys) d[py::str(k)] = cell(study_value(row, k));
+  return d;
+}
+
+py::dict study(const py::object& source, int jobs, bool plots, const py::object& progress, const py::object& executable) {
+  StudySpec spec;
+  if (py::isinstance<py::dict>(source)) {
+    spec = parse_study(json_dumps(source), "<dict>");
+  } else {
+    spec = load_study(py::module_::import("os").attr("fspath")(source).cast<std::string>());
+  }
+  StudyOptions o;
+  o.executable = executable.is_none() ? std::string(FRONTPACK_EXECUTABLE)
+                                      : py::module_::import("os").attr("fspath")(executable).cast<std::string>();
+  if (access(o.executable.c_str(), X_OK) != 0)
+    throw std::runtime_error("the frontpack command " + o.executable + " is not there (build it, or give executable=)");
+  o.jobs = jobs;
+  o.plots = plots;
+  o.quiet = true;
+  o.poll = [] {
+    const py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();  // Ctrl-C stops the study
+  };
+  if (!progress.is_none())
+    o.on_run = [&progress](const StudyRun&, const StudyRow& row, std::size_t done, std::size_t total) {
+      const py::gil_scoped_acquire gil;
+      progress(done, total, row_dict(row));
+    };
+  StudyOutcome out;
+  {
+    const py::gil_scoped_release released;
+    out = run_study(spec, o);
+  }
+  if (plots && !out.plots_problem.empty()) throw std::runtime_error("no figures: " + out.plots_problem);
+  py::dict d;
+  d["folder"] = spec.output_dir;
+  d["csv"] = out.csv_path;
+  d["figures"] = out.plots;
+  d["runs"] = out.runs;
+  d["kept"] = out.kept;
+  d["ran"] = out.ran;
+  d["invalid"] = out.invalid;
+  d["failed"] = out.failed;
+  py::list rows;
+  for (const StudyRow& r : out.rows) rows.append(row_dict(r));
+  d["rows"] = rows;
+  return d;
 }
 
 }  // namespace
@@ -233,10 +316,19 @@ PYBIND11_MODULE(frontpack, m) {
       "The shape families a scene's `shape:` may name, each with the dimensions it exists in (README: Non-spherical "
       "particles, for their parameters).");
   m.def("pack", &pack, py::arg("scene"), py::kw_only(), py::arg("seed") = py::none(), py::arg("threads") = py::none(),
-        py::arg("progress") = py::none(),
+        py::arg("progress") = py::none(), py::arg("set") = py::none(),
         "Packs a scene (a path to a scene file, or a dict with its schema) as `frontpack pack` does, without writing "
-        "its outputs. seed, threads: as --seed and -j. progress(n, seconds, volume_fraction) is called about every "
-        "0.5 s; an exception raised in it (or Ctrl-C) stops the run.");
+        "its outputs. seed, threads: as --seed and -j; set: {dotted key: value} as --set KEY=VALUE. "
+        "progress(n, seconds, volume_fraction) is called about every 0.5 s; an exception raised in it (or Ctrl-C) "
+        "stops the run.");
+  m.def("study", &study, py::arg("study"), py::kw_only(), py::arg("jobs") = 0, py::arg("plots") = true,
+        py::arg("progress") = py::none(), py::arg("executable") = py::none(),
+        "Runs a study as `frontpack study` does (a path to a study file, or a dict with its schema; a dict's relative "
+        "paths start at the working directory): every run in its own frontpack process, `jobs` at once (0: the "
+        "study's), done runs kept. Returns {'folder', 'csv', 'figures', 'runs', 'kept', 'ran', 'invalid', 'failed', "
+        "'rows'}: rows are the CSV's, as dicts of numbers, flags and text. progress(done, total, row) after each run; "
+        "an exception in it (or Ctrl-C) stops the study (its runs are killed). executable: the frontpack command "
+        "(default: the one built with this module).");
   m.def(
       "analyze",
       [](const PyPacking& p, const py::object& scene, double tolerance, int threads) {

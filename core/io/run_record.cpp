@@ -26,6 +26,7 @@ Json record_object(const RunRecord& r) {
   j["seed"] = r.seed;
   j["n"] = r.n;
   j["scene"] = Json{{"path", r.scene_path}, {"text", r.scene_text}};
+  if (!r.scene_overrides.empty()) j["scene"]["overrides"] = r.scene_overrides;  // --set, a study's run
   j["container"] = r.container_description;
   j["distribution"] = r.distribution_description;
   if (r.bounds) {

@@ -27,6 +27,7 @@ struct RunRecord {
   std::string version;
   std::string scene_path;
   std::string scene_text;
+  std::vector<std::string> scene_overrides;  ///< Scene::overrides ("KEY=VALUE", in order)
   std::uint64_t seed = 1;
   int dimension = 3;
   std::uint64_t n = 0;

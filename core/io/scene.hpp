@@ -251,6 +251,7 @@ struct ParticleTemplateSpec {
 struct Scene {
   std::string source_path;   ///< file the scene was read from ("" if built in code)
   std::string source_text;   ///< its exact text, carried into the run record
+  std::vector<std::string> overrides;  ///< "KEY=VALUE" changes applied to that text (--set, a study's run), in order
   int dimension = 3;
   std::uint64_t seed = 1;
   ContainerPtr<2> container2;  ///< set when dimension == 2

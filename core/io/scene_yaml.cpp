@@ -30,8 +30,10 @@
 #ifdef FRONTPACK_TET_MESHER
 #include "core/geometry/tet_mesher_cgal.hpp"
 #endif
+#include "core/io/document_file.hpp"
 #include "core/io/input_file.hpp"
 #include "core/io/output_format.hpp"
+#include "core/io/yaml_document.hpp"
 #include "core/sampling/constant_radius.hpp"
 #include "core/sampling/discrete_radius.hpp"
 #include "core/sampling/gradation_radius.hpp"
@@ -44,252 +46,8 @@
 namespace fp {
 namespace {
 
-using Keys = std::vector<std::string>;
+using namespace yaml_document;
 
-std::string join(const Keys& keys) {
-  std::string s;
-  for (const auto& k : keys) s += (s.empty() ? "" : ", ") + k;
-  return s;
-}
-
-// Edit distance, for "did you mean" hints on misspelt keys and values.
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (same ? 0 : 1)});
-      diag = up;
-    }
-  }
-  return row[b.size()];
-}
-
-std::string suggestion(const std::string& word, const Keys& allowed) {
-  std::size_t best = std::numeric_limits<std::size_t>::max();
-  std::string best_word;
-  for (const auto& a : allowed) {
-    const std::size_t d = edit_distance(word, a);
-    if (d < best) {
-      best = d;
-      best_word = a;
-    }
-  }
-  return best <= std::max<std::size_t>(1, std::min<std::size_t>(3, word.size() / 3)) ? " (did you mean '" + best_word + "'?)" : "";
-}
-
-bool contains(const Keys& keys, const std::string& k) { return std::find(keys.begin(), keys.end(), k) != keys.end(); }
-
-std::string shown(const YAML::Node& n) {
-  if (!n.IsDefined() || n.IsNull()) return "nothing";
-  if (n.IsScalar()) return n.Tag() == "!" ? "the string \"" + n.Scalar() + "\"" : "'" + n.Scalar() + "'";
-  if (n.IsSequence()) return "a list";
-  return "a mapping";
-}
-
-struct Context {
-  std::string file;
-  std::filesystem::path folder;  // of the scene file: relative mesh paths start here
-  std::vector<std::string>* read_files = nullptr;  // Scene::read_files: the mesh is added
-  std::shared_ptr<const TetMesh>* tet_mesh = nullptr;  // Scene::tet_mesh: set by a .msh container
-
-  [[noreturn]] void fail(const YAML::Mark& m, const std::string& key, const std::string& message) const {
-    const bool known = !m.is_null() && m.line >= 0;
-    throw SceneError(file, known ? m.line + 1 : 0, known ? m.column + 1 : 0, key, message);
-  }
-};
-
-class Map;
-
-// One value of the document with its dotted path and a position to report.
-class Value {
- public:
-  Value(const Context& ctx, YAML::Node node, std::string path, YAML::Mark mark)
-      : ctx_(&ctx), node_(std::move(node)), path_(std::move(path)), mark_(mark) {}
-
-  const std::string& path() const { return path_; }
-  const YAML::Mark& mark() const { return mark_; }
-  const YAML::Node& node() const { return node_; }
-  [[noreturn]] void fail(const std::string& message) const { ctx_->fail(mark_, path_, message); }
-  /// Where this value was written, for errors raised after parsing (shapes/).
-  SourceSpot spot() const {
-    const bool known = !mark_.is_null() && mark_.line >= 0;
-    return SourceSpot{ctx_->file, known ? mark_.line + 1 : 0, known ? mark_.column + 1 : 0, path_};
-  }
-
-  double number() const {
-    if (!node_.IsScalar() || node_.Tag() == "!") fail("expected a number, got " + shown(node_));
-    std::string_view s = node_.Scalar();
-    if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-    double v = 0;
-    const auto res = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (s.empty() || res.ec != std::errc() || res.ptr != s.data() + s.size()) {
-      if (res.ec == std::errc::result_out_of_range) fail("number out of range (got " + node_.Scalar() + ")");
-      fail("expected a number, got " + shown(node_));
-    }
-    if (!std::isfinite(v)) fail("must be a finite number (got " + node_.Scalar() + ")");
-    return v;
-  }
-  double positive() const {
-    const double v = number();
-    if (!(v > 0)) fail("must be positive (got " + node_.Scalar() + ")");
-    return v;
-  }
-  /// Non-negative integer. With `float_notation`, "1e6" or "1000.0" are accepted when exact.
-  std::uint64_t unsigned_integer(bool float_notation = false) const {
-    if (!node_.IsScalar() || node_.Tag() == "!") fail("expected a non-negative integer, got " + shown(node_));
-    std::string_view s = node_.Scalar();
-    if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-    std::uint64_t v = 0;
-    const auto res = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (!s.empty() && res.ec == std::errc() && res.ptr == s.data() + s.size()) return v;
-    if (res.ec == std::errc::result_out_of_range) fail("integer out of range 0 .. 2^64-1 (got " + node_.Scalar() + ")");
-    if (float_notation) {
-      const double d = number();
-      if (d >= 0 && d < 0x1.0p53 && d == std::floor(d)) return static_cast<std::uint64_t>(d);
-    }
-    fail("expected a non-negative integer, got " + shown(node_));
-  }
-  bool boolean() const {
-    bool b = false;
-    if (!node_.IsScalar() || !YAML::convert<bool>::decode(node_, b)) fail("expected true or false, got " + shown(node_));
-    return b;
-  }
-  std::string string() const {
-    if (!node_.IsScalar()) fail("expected a string, got " + shown(node_));
-    return node_.Scalar();
-  }
-  /// One of `allowed`.
-  std::string choice(const Keys& allowed) const {
-    if (!node_.IsScalar()) fail("expected one of " + join(allowed) + ", got " + shown(node_));
-    const std::string s = node_.Scalar();
-    if (!contains(allowed, s)) fail("unknown value '" + s + "'" + suggestion(s, allowed) + "; allowed: " + join(allowed));
-    return s;
-  }
-  std::vector<Value> list() const {
-    if (!node_.IsSequence()) fail("expected a list, got " + shown(node_));
-    std::vector<Value> out;
-    std::size_t i = 0;
-    for (const auto& item : node_) {
-      const YAML::Mark m = item.Mark().is_null() ? mark_ : item.Mark();
-      out.emplace_back(*ctx_, item, path_ + "[" + std::to_string(i++) + "]", m);
-    }
-    return out;
-  }
-  std::vector<double> numbers(std::optional<std::size_t> count = std::nullopt) const {
-    const auto items = list();
-    if (count && items.size() != *count)
-      fail("expected " + std::to_string(*count) + " numbers, got " + std::to_string(items.size()));
-    std::vector<double> out;
-    for (const auto& v : items) out.push_back(v.number());
-    return out;
-  }
-  template <int D>
-  Vec<D> vec(const std::string& what_dimension) const {
-    const auto items = list();
-    if (items.size() != static_cast<std::size_t>(D))
-      fail("must have " + std::to_string(D) + " components (" + what_dimension + "), got " + std::to_string(items.size()));
-    Vec<D> v;
-    for (int k = 0; k < D; ++k) v[k] = items[static_cast<std::size_t>(k)].number();
-    return v;
-  }
-  /// [[a, b], ...] as pairs.
-  std::vector<std::pair<double, double>> pairs(const std::string& shape) const {
-    std::vector<std::pair<double, double>> out;
-    for (const auto& item : list()) {
-      if (!item.node().IsSequence() || item.node().size() != 2) item.fail("expected a pair " + shape + ", got " + shown(item.node()));
-      const auto ab = item.list();
-      out.emplace_back(ab[0].number(), ab[1].number());
-    }
-    return out;
-  }
-  Map map() const;
-
- private:
-  const Context* ctx_;
-  YAML::Node node_;
-  std::string path_;
-  YAML::Mark mark_;
-};
-
-// A mapping of the document: checks its keys (unknown, duplicate, not used) and hands out
-// values with their paths.
-class Map {
- public:
-  Map(const Context& ctx, const YAML::Node& node, std::string path, YAML::Mark mark)
-      : ctx_(&ctx), path_(std::move(path)), mark_(mark) {
-    if (!node.IsMap()) ctx.fail(mark_, path_, "expected a mapping (key: value lines), got " + shown(node));
-    for (const auto& kv : node) {  // kv is a temporary pair of node handles: copy them
-      const YAML::Node key = kv.first;
-      const YAML::Mark key_mark = key.Mark();
-      if (!key.IsScalar()) ctx.fail(key_mark, path_, "keys must be plain names");
-      const std::string name = key.Scalar();
-      for (const auto& e : entries_)
-        if (e.name == name)
-          ctx.fail(key_mark, child_path(name),
-                   "duplicate key (first given on line " + std::to_string(e.key_mark.line + 1) + ")");
-      // A null value's mark points past the key; report such values at their key.
-      const YAML::Node value = kv.second;
-      const YAML::Mark value_mark = value.IsNull() || value.Mark().is_null() ? key_mark : value.Mark();
-      entries_.push_back({name, key_mark, Value(ctx, value, child_path(name), value_mark)});
-    }
-  }
-
-  const std::string& path() const { return path_; }
-  const YAML::Mark& mark() const { return mark_; }
-
-  /// Every key must be in `allowed`.
-  void check_known(const Keys& allowed) const {
-    for (const auto& e : entries_)
-      if (!contains(allowed, e.name))
-        ctx_->fail(e.key_mark, child_path(e.name),
-                   "unknown key" + suggestion(e.name, allowed) + "; allowed keys " +
-                       (path_.empty() ? "at the top level" : "in '" + path_ + "'") + ": " + join(allowed));
-  }
-  /// Every key must be in `used` (keys known in general but not used by this kind).
-  void check_used(const Keys& used, const std::string& by_what) const {
-    for (const auto& e : entries_)
-      if (!contains(used, e.name))
-        ctx_->fail(e.key_mark, child_path(e.name), "not used by " + by_what + " (its keys: " + join(used) + ")");
-  }
-
-  bool has(const std::string& key) const { return find(key).has_value(); }
-  /// The keys in the order they were written.
-  Keys keys() const {
-    Keys out;
-    for (const auto& e : entries_) out.push_back(e.name);
-    return out;
-  }
-  std::optional<Value> find(const std::string& key) const {
-    for (const auto& e : entries_)
-      if (e.name == key) return e.value;
-    return std::nullopt;
-  }
-  Value get(const std::string& key, const std::string& hint = "") const {
-    if (auto v = find(key)) return *v;
-    ctx_->fail(mark_, child_path(key), "missing required key" + (hint.empty() ? "" : " (" + hint + ")"));
-  }
-  [[noreturn]] void fail(const std::string& message) const { ctx_->fail(mark_, path_, message); }
-
- private:
-  std::string child_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-
-  struct Entry {
-    std::string name;
-    YAML::Mark key_mark;
-    Value value;
-  };
-  const Context* ctx_;
-  std::string path_;
-  YAML::Mark mark_;
-  std::vector<Entry> entries_;
-};
-
-Map Value::map() const { return Map(*ctx_, node_, path_, mark_); }
 
 /// A constructor's message without the C++ class it starts with ("LognormalRadius: [min, max]
 /// = ..." -> "[min, max] = ..."): the error names the key instead.
@@ -1153,7 +911,7 @@ void parse_body(const Map& root, Scene& scene, const Context& ctx) {
 
 }  // namespace
 
-Scene parse_scene(const std::string& text, const std::string& source_name) {
+Scene parse_scene(const std::string& text, const std::string& source_name, const std::vector<SceneOverride>& overrides) {
   Context ctx;
   ctx.file = source_name;
   ctx.folder = std::filesystem::path(source_name).parent_path();
@@ -1170,10 +928,13 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
   start.line = 0;
   start.column = 0;
   if (!doc.IsDefined() || doc.IsNull()) ctx.fail(start, "", "the scene is empty (required keys: dimension, container, particles)");
+  apply_overrides(doc, overrides);
+  ctx.overrides = &overrides;
 
   Scene scene;
   scene.source_path = source_name;
   scene.source_text = text;
+  for (const auto& o : overrides) scene.overrides.push_back(o.key + "=" + o.value);
   ctx.read_files = &scene.read_files;
   ctx.tet_mesh = &scene.tet_mesh;
   try {
@@ -1222,30 +983,9 @@ Scene parse_scene(const std::string& text, const std::string& source_name) {
   return scene;
 }
 
-Scene load_scene(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw SceneError(path, 0, 0, "", "is a folder; give the scene file (YAML) itself, e.g. scenes/demo.yaml");
-  const std::string problem = input_file_problem(path);
-  if (!problem.empty()) throw SceneError(path, 0, 0, "", "the scene file " + problem);
-  const std::string limit = "scene files are limited to " + std::to_string(kMaxSceneBytes >> 20) + " MiB";
-  if (const auto size = std::filesystem::file_size(path, ec); !ec && size > kMaxSceneBytes)
-    throw SceneError(path, 0, 0, "", "the scene file is " + std::to_string(size) + " bytes; " + limit);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    const int err = errno;
-    throw SceneError(path, 0, 0, "", std::string("cannot read the scene file") + (err ? std::string(": ") + std::strerror(err) : ""));
-  }
-  // In chunks, no more than the cap even if the file grows meanwhile (a buffer of the cap, zeroed
-  // and faulted in, cost 50 ms of every run: a sixth of a small packing's).
-  std::string text;
-  std::array<char, 1 << 16> chunk;
-  while (in) {
-    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
-    text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxSceneBytes) throw SceneError(path, 0, 0, "", "the scene file grew while it was read; " + limit);
-  }
-  Scene scene = parse_scene(text, path);
+Scene load_scene(const std::string& path, const std::vector<SceneOverride>& overrides) {
+  const std::string text = read_document_file(path, "scene", "scenes/demo.yaml", kMaxSceneBytes);
+  Scene scene = parse_scene(text, path, overrides);
   scene.read_files.insert(scene.read_files.begin(), path);
   return scene;
 }

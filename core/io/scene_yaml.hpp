@@ -3,7 +3,7 @@
 // packer options, stop criteria and outputs checked. Every problem is a SceneError naming
 // the file, line, column and dotted key (scene_error.hpp). Nothing is silently ignored: an
 // unknown key, or a key the chosen container/distribution does not use, is an error.
-// Only scene_yaml.cpp includes yaml-cpp.
+// yaml-cpp is included only in fp_io, behind core/io/yaml_document.hpp.
 //
 // Schema ("*" = required):
 //   dimension*: 2 | 3
@@ -57,9 +57,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/io/scene.hpp"
 #include "core/io/scene_error.hpp"
+#include "core/io/scene_override.hpp"
 
 namespace fp {
 
@@ -79,12 +81,13 @@ inline constexpr std::uint64_t kMaxThreads = 4096;
 inline constexpr double kMinLength = 1e-100;
 inline constexpr double kMaxLength = 1e100;
 
-/// Reads and parses `path`. Throws SceneError (also when the file cannot be read, is not a
-/// regular file, or is larger than kMaxSceneBytes).
-Scene load_scene(const std::string& path);
+/// Reads and parses `path`, changed by `overrides` (in order; Scene::overrides). Throws
+/// SceneError (also when the file cannot be read, is not a regular file, or is larger than
+/// kMaxSceneBytes); a problem with an override's key or value names where it was given.
+Scene load_scene(const std::string& path, const std::vector<SceneOverride>& overrides = {});
 
 /// Parses scene text; `source_name` is used in messages, stored as Scene::source_path, and
 /// its folder resolves relative mesh file names.
-Scene parse_scene(const std::string& text, const std::string& source_name);
+Scene parse_scene(const std::string& text, const std::string& source_name, const std::vector<SceneOverride>& overrides = {});
 
 }  // namespace fp

@@ -1,0 +1,72 @@
+#include "cli/study_table.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <set>
+
+namespace fp {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+void add(StudyRow& row, const std::string& key, const std::string& value) {
+  if (row.values.emplace(key, value).second) row.keys.push_back(key);
+}
+
+void flatten(const Json& j, const std::string& prefix, StudyRow& row) {
+  if (j.is_object()) {
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      if (prefix.empty() && it.key() == "scene") continue;  // the run's identity says it
+      flatten(it.value(), prefix.empty() ? it.key() : prefix + "." + it.key(), row);
+    }
+  } else if (j.is_string()) {
+    add(row, prefix, j.get<std::string>());
+  } else if (j.is_boolean() || j.is_number()) {
+    add(row, prefix, j.dump());  // numbers as nlohmann writes them: the shortest text that reads back exactly
+  }
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string out = "\"";
+  for (const char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+}  // namespace
+
+StudyRow study_row(const StudySpec& spec, const StudyRun& run, const std::string& status, const std::string& message,
+                   const std::string& record_text) {
+  StudyRow row;
+  add(row, "run", run.name);
+  for (std::size_t p = 0; p < spec.parameters.size(); ++p)
+    add(row, spec.parameters[p].name, spec.parameters[p].levels[run.levels[p]].label);
+  add(row, "seed", std::to_string(run.seed));
+  add(row, "status", status);
+  add(row, "message", message);
+  if (!record_text.empty()) flatten(Json::parse(record_text), "", row);
+  return row;
+}
+
+std::string study_csv(const std::vector<StudyRow>& rows) {
+  std::vector<std::string> columns;
+  std::set<std::string> seen;
+  for (const auto& row : rows)
+    for (const auto& k : row.keys)
+      if (seen.insert(k).second) columns.push_back(k);
+  std::string out;
+  for (std::size_t c = 0; c < columns.size(); ++c) out += (c ? "," : "") + csv_field(columns[c]);
+  out += '\n';
+  for (const auto& row : rows) {
+    for (std::size_t c = 0; c < columns.size(); ++c) out += (c ? "," : "") + csv_field(study_value(row, columns[c]));
+    out += '\n';
+  }
+  return out;
+}
+
+std::string study_value(const StudyRow& row, const std::string& key) {
+  const auto it = row.values.find(key);
+  return it == row.values.end() ? std::string() : it->second;
+}
+
+}  // namespace fp

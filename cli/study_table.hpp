@@ -1,0 +1,31 @@
+#pragma once
+// The study's table: one row per run, its parameters' values, seed and status, then every
+// number, flag and name of its run record (`frontpack pack --record`: timings, metrics,
+// counters, info, the analysis), flattened to dotted column names; lists (histograms, curves)
+// stay in the record.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cli/study_runs.hpp"
+
+namespace fp {
+
+struct StudyRow {
+  std::vector<std::string> keys;                 ///< in the record's order
+  std::map<std::string, std::string> values;     ///< CSV text of each key
+};
+
+/// The row of a run: its identity, `status` (ok | invalid | failed), `message` (why it failed),
+/// and, when `record_text` is not empty, the record's scalars.
+StudyRow study_row(const StudySpec& spec, const StudyRun& run, const std::string& status, const std::string& message,
+                   const std::string& record_text);
+
+/// The CSV of `rows`: the columns are the union of their keys, in order of first appearance;
+/// a value a run does not have is empty. Text with a comma, quote or newline is quoted.
+std::string study_csv(const std::vector<StudyRow>& rows);
+
+/// The figure of a column, read back from a row ("" when the run has none).
+std::string study_value(const StudyRow& row, const std::string& key);
+
+}  // namespace fp
