@@ -92,8 +92,11 @@ py::array centers_of(const Packing<D>& P, py::handle owner) {
 
 py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
-std::string json_dumps(const py::object& o) {
-  return py::module_::import("json").attr("dumps")(o, py::arg("indent") = 1).cast<std::string>();
+/// JSON text (a subset of YAML): one key per line for documents (messages name their lines),
+/// on one line for a --set value.
+std::string json_dumps(const py::object& o, bool lines = true) {
+  const py::object dumps = py::module_::import("json").attr("dumps");
+  return (lines ? dumps(o, py::arg("indent") = 1) : dumps(o)).cast<std::string>();
 }
 
 /// `set={"packer.front": "fifo", ...}` as --set changes (values as JSON, a subset of YAML).
@@ -102,7 +105,7 @@ std::vector<SceneOverride> overrides_from(const py::object& changes) {
   if (changes.is_none()) return out;
   for (const auto& [key, value] : changes.cast<py::dict>()) {
     const std::string k = py::str(key).cast<std::string>();
-    const std::string v = py::isinstance<py::str>(value) ? value.cast<std::string>() : json_dumps(py::reinterpret_borrow<py::object>(value));
+    const std::string v = py::isinstance<py::str>(value) ? value.cast<std::string>() : json_dumps(py::reinterpret_borrow<py::object>(value), false);
     SceneOverride o = scene_override_argument(k + "=" + v);  // checks the key's form
     o.origin.file = "set[" + k + "]";
     out.push_back(std::move(o));

@@ -40,13 +40,12 @@ SceneOverride override_at(const Value& v, const std::string& key) {
   return o;
 }
 
-/// A dotted scene key as --set takes it (checked the same way).
-std::string scene_key(const Value& v) {
-  const std::string key = v.string();
+/// `key`, given at `where`, checked as --set checks a key.
+std::string scene_key(const Value& where, const std::string& key) {
   try {
     return scene_override_argument(key + "=x").key;
   } catch (const std::invalid_argument&) {
-    v.fail("'" + key + "' is not a scene key (dotted names with list indices, e.g. container.max or particles[0].aspect_ratio)");
+    where.fail("'" + key + "' is not a scene key (dotted names with list indices, e.g. container.max or particles[0].aspect_ratio)");
   }
 }
 
@@ -65,7 +64,7 @@ StudyParameter parse_parameter(const Value& v) {
       const Map changes = cases.get(label).map();
       for (const std::string& key : changes.keys()) {
         const Value change = *changes.find(key);
-        scene_key(change);  // the key's form
+        scene_key(change, key);
         level.overrides.push_back(override_at(change, key));
       }
       if (level.overrides.empty()) cases.get(label).fail("a case changes at least one key");
@@ -74,7 +73,7 @@ StudyParameter parse_parameter(const Value& v) {
     if (p.levels.empty()) m.get("cases").fail("give at least one case");
   } else {
     const Value key_value = m.get("key", "the dotted scene key swept (or 'name' and 'cases')");
-    const std::string key = scene_key(key_value);
+    const std::string key = scene_key(key_value, key_value.string());
     p.name = m.has("name") ? m.get("name").string() : key;
     const auto values = m.get("values", "the values the key takes").list();
     if (values.empty()) m.get("values").fail("give at least one value");

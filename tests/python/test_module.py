@@ -212,3 +212,42 @@ def test_a_large_packing_is_returned_without_copies():
     assert len(p) > 100000
     # Beyond packing and checking: building the Python object (views, no copies).
     assert total - inside < 0.5, (total, inside)
+
+
+def test_pack_with_set_is_the_command_lines_set(tmp_path):
+    scene = write_scene(tmp_path, BOX)
+    r = cli("pack", scene, "-o", "cli.csv", "-q", "--set", "particles.radius.max=0.03", "--set",
+            "container.max=[0.3, 0.2, 0.3]", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    p = frontpack.pack(scene, set={"particles.radius.max": 0.03, "container.max": [0.3, 0.2, 0.3]})
+    assert np.array_equal(np.column_stack([p.centers, p.radii]), read_csv(tmp_path / "cli.csv")[:, 1:5])
+    assert p.record["scene"]["overrides"] == ["particles.radius.max=0.03", "container.max=[0.3, 0.2, 0.3]"]
+    assert p.radii.max() > 0.02
+    with pytest.raises(frontpack.SceneError, match=r"set\[packer.front\]: key 'packer.front': unknown value 'fifoo'"):
+        frontpack.pack(scene, set={"packer.front": "fifoo"})
+
+
+def test_study_from_a_dict_is_the_command_lines_study(tmp_path, monkeypatch):
+    write_scene(tmp_path, BOX, "base.yaml")
+    study = {"scene": "base.yaml", "seeds": [1, 2], "jobs": 2,
+             "parameters": [{"key": "particles.radius.max", "name": "r_max", "values": [0.02, 0.03]},
+                            {"key": "packer.front", "values": ["closest", "fifo"]}]}
+    (tmp_path / "s.yaml").write_text(json.dumps(study))
+    r = cli("study", "s.yaml", "--no-plots", "-q", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    seen = []
+    monkeypatch.chdir(tmp_path)  # a dict's relative paths start at the working directory
+    out = frontpack.study(dict(study, output="py.out"), plots=False, progress=lambda done, total, row: seen.append((done, total)))
+    assert (out["runs"], out["ran"], out["failed"], out["invalid"]) == (8, 8, 0, 0)
+    assert sorted(seen) == [(k, 8) for k in range(1, 9)]
+    cli_rows = list(__import__("csv").DictReader(open(tmp_path / "s.out/results.csv")))
+    assert [row["run"] for row in out["rows"]] == [row["run"] for row in cli_rows]
+    for mine, theirs in zip(out["rows"], cli_rows):
+        assert mine["metrics.volume_fraction_container"] == float(theirs["metrics.volume_fraction_container"])
+        assert mine["n"] == int(theirs["n"]) and mine["status"] == "ok" and mine["r_max"] in (0.02, 0.03)
+        assert (tmp_path / "py.out/runs" / mine["run"] / "packing.csv").read_bytes() == \
+            (tmp_path / "s.out/runs" / mine["run"] / "packing.csv").read_bytes()
+    again = frontpack.study(dict(study, output="py.out"), plots=False)
+    assert (again["kept"], again["ran"]) == (8, 0)
+    with pytest.raises(frontpack.SceneError, match=r"<dict>:\d+:\d+: key 'seed': unknown key \(did you mean 'seeds'\?\)"):
+        frontpack.study({"scene": "base.yaml", "seed": 2})

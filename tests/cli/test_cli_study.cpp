@@ -1,0 +1,274 @@
+// `frontpack pack --set` and `frontpack study`: a change given on the command line is the same as
+// the scene file changed; a study's runs are the command line's runs (the same packings and
+// figures), a study killed and started again keeps what was done, and bad studies are refused
+// before anything runs, naming the file, line and key.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <chrono>
+#include <map>
+#include <thread>
+
+#include "cli_test_util.hpp"
+
+namespace fptest {
+namespace {
+
+const char* kBase = R"(dimension: 3
+seed: 1
+container: {type: box, min: [0, 0, 0], max: [0.15, 0.15, 0.15]}
+particles: {radius: {distribution: uniform, min: 0.01, max: 0.02}}
+)";
+
+/// The rows of a CSV as column -> text (quoted fields are not used by these studies' values).
+std::vector<std::map<std::string, std::string>> csv_rows(const std::string& text) {
+  const auto lines = lines_of(text);
+  std::vector<std::map<std::string, std::string>> rows;
+  if (lines.empty()) return rows;
+  const auto split = [](const std::string& line) {
+    std::vector<std::string> f;
+    std::string cell;
+    bool quoted = false;
+    for (const char c : line) {
+      if (c == '"') quoted = !quoted;
+      else if (c == ',' && !quoted) f.push_back(cell), cell.clear();
+      else cell += c;
+    }
+    f.push_back(cell);
+    return f;
+  };
+  const auto header = split(lines[0]);
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto f = split(lines[i]);
+    std::map<std::string, std::string> row;
+    for (std::size_t c = 0; c < header.size() && c < f.size(); ++c) row[header[c]] = f[c];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(CliSet, AChangeOnTheCommandLineIsTheSceneFileChanged) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", kBase);
+  std::string edited = kBase;
+  edited.replace(edited.find("max: 0.02"), 9, "max: 0.03");
+  edited.replace(edited.find("max: [0.15, 0.15, 0.15]"), 23, "max: [0.2, 0.15, 0.15]");
+  write_bytes(dir.work() / "e.yaml", edited + "packer: {front: fifo}\n");
+  RunResult r = run_frontpack(dir, "pack s.yaml --set particles.radius.max=0.03 --set 'container.max[0]=0.2' --set packer.front=fifo "
+                                   "-q -o set.csv --record set.json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_frontpack(dir, "pack e.yaml -q -o edited.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(read_bytes(dir.work() / "set.csv").size(), 1000u);
+  EXPECT_EQ(read_bytes(dir.work() / "set.csv"), read_bytes(dir.work() / "edited.csv"));
+  // The record says what was changed, in order.
+  const std::string record = read_bytes(dir.work() / "set.json");
+  EXPECT_NE(record.find("\"overrides\": [\n      \"particles.radius.max=0.03\",\n      \"container.max[0]=0.2\",\n      "
+                        "\"packer.front=fifo\"\n    ]"),
+            std::string::npos)
+      << record.substr(0, 600);
+  // validate and analyze take the same change: the packing passes against the changed scene only.
+  EXPECT_EQ(run_frontpack(dir, "validate set.csv --scene s.yaml -q --set particles.radius.max=0.03 --set 'container.max[0]=0.2'").exit_code, 0);
+  EXPECT_EQ(run_frontpack(dir, "validate set.csv --scene s.yaml -q").exit_code, 3);
+  // A whole mapping, in YAML's flow form.
+  r = run_frontpack(dir, "pack s.yaml --set 'particles={radius: {distribution: constant, value: 0.02}}' -q -o c.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const auto& line : lines_of(read_bytes(dir.work() / "c.csv")))
+    if (!line.empty() && std::isdigit(static_cast<unsigned char>(line[0]))) EXPECT_NE(line.find(",0.02"), std::string::npos) << line;
+}
+
+TEST(CliSet, ABadChangeNamesTheArgumentAndWritesNothing) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", kBase);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--set packer.front=fifoo", "--set packer.front=fifoo: key 'packer.front': unknown value 'fifoo' (did you mean 'fifo'?)"},
+      {"--set 'container.min[5]=1'", "key 'container.min[5]': 'container.min' has no item [5] (it has 3)"},
+      {"--set particles.radius.mx=0.03", "--set particles.radius.mx=0.03: key 'particles.radius.mx': unknown key (did you mean 'max'?)"},
+      {"--set dimension=2", "s.yaml:3:19: key 'container.type': 'box' is a 3D container but the scene has dimension: 2"},
+      {"--set dimension=2", "(in the scene as changed by dimension=2)"},
+      {"--set foo", "expected KEY=VALUE"},
+      {"--set 'a..b=1'", "is not a scene key"},
+      {"--set 'packer.front='", "--set packer.front=: key 'packer.front': no value given"},
+      {"--set 'stop={particles: [1'", "is not YAML"},
+      {"--set 'seed.x=1'", "'seed' is not a mapping, so it has no key 'x'"},
+  };
+  for (const auto& [args, message] : cases) {
+    const RunResult r = run_frontpack(dir, "pack s.yaml -o out.csv " + args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << "\n" << r.err;
+  }
+  EXPECT_EQ(listing(dir.work()), (std::set<std::string>{"s.yaml"}));
+}
+
+/// A 3 x 3 parameter grid x 3 seeds.
+const char* kStudy = R"(scene: base.yaml
+seeds: [1, 2, 3]
+parameters:
+  - key: particles.radius.max
+    name: r_max
+    values: [0.02, 0.025, 0.03]
+  - name: front
+    cases:
+      closest: {packer.front: closest}
+      random: {packer.front: random}
+      fifo_flat: {packer.front: fifo, container.max: [0.2, 0.2, 0.1]}
+jobs: 2
+plots:
+  - {x: r_max, y: counters.solves}
+)";
+
+TEST(CliStudy, ThreeByThreeByThreeSeedsAreTheCommandLinesRuns) {
+  TempDir dir;
+  write_bytes(dir.work() / "base.yaml", kBase);
+  write_bytes(dir.work() / "s.yaml", kStudy);
+  const RunResult r = run_frontpack(dir, "study s.yaml");
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  EXPECT_NE(r.out.find("27 runs (0 kept from before, 27 run now), 0 invalid, 0 failed"), std::string::npos) << r.out;
+  const auto rows = csv_rows(read_bytes(dir.work() / "s.out/results.csv"));
+  ASSERT_EQ(rows.size(), 27u);
+  // The grid in order (the last parameter fastest, then the seeds), each run checked against
+  // the same change given to `frontpack pack`: the same packing, byte for byte, and the CSV's
+  // figures are its record's.
+  const char* fronts[] = {"closest", "random", "fifo_flat"};
+  const char* changes[] = {"--set packer.front=closest", "--set packer.front=random",
+                           "--set packer.front=fifo --set 'container.max=[0.2, 0.2, 0.1]'"};
+  const char* r_max[] = {"0.02", "0.025", "0.03"};
+  std::size_t i = 0;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+      for (int seed = 1; seed <= 3; ++seed, ++i) {
+        const auto& row = rows[i];
+        const std::string name = std::string("r_max=") + r_max[a] + ",front=" + fronts[b] + ",seed=" + std::to_string(seed);
+        EXPECT_EQ(row.at("run"), name);
+        EXPECT_EQ(row.at("r_max"), r_max[a]);
+        EXPECT_EQ(row.at("front"), fronts[b]);
+        EXPECT_EQ(row.at("seed"), std::to_string(seed));
+        EXPECT_EQ(row.at("status"), "ok");
+        const RunResult p = run_frontpack(dir, std::string("pack base.yaml -q -o p.csv --record p.json --seed ") + std::to_string(seed) +
+                                                   " --set particles.radius.max=" + r_max[a] + " " + changes[b]);
+        ASSERT_EQ(p.exit_code, 0) << p.err;
+        EXPECT_EQ(read_bytes(dir.work() / "p.csv"), read_bytes(dir.work() / "s.out/runs" / name / "packing.csv")) << name;
+        const std::string record = read_bytes(dir.work() / "p.json");
+        EXPECT_EQ(std::stod(row.at("metrics.volume_fraction_container")), record_number(record, "volume_fraction_container")) << name;
+        EXPECT_EQ(std::stod(row.at("metrics.mean_coordination")), record_number(record, "mean_coordination")) << name;
+        EXPECT_EQ(std::stoul(row.at("n")), static_cast<unsigned long>(record_number(record, "n"))) << name;
+      }
+  // The standard figures and the one asked for, when matplotlib is there.
+  if (!fs::exists("/usr/bin/python3") || std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") != 0) {
+    GTEST_SKIP() << "figures not checked: /usr/bin/python3 with matplotlib is missing";
+  }
+  for (const char* figure : {"r_max.png", "front.png", "rate_vs_vf.png", "counters.solves_vs_r_max.png"}) {
+    const std::string png = read_bytes(dir.work() / "s.out/plots" / figure);
+    EXPECT_GT(png.size(), 10000u) << figure;
+    EXPECT_EQ(png.substr(0, 4), "\x89PNG") << figure;
+  }
+}
+
+ino_t inode(const fs::path& p) {
+  struct stat st {};
+  return ::stat(p.c_str(), &st) == 0 ? st.st_ino : 0;
+}
+
+TEST(CliStudy, KilledAndStartedAgainItKeepsWhatWasDone) {
+  TempDir dir;
+  write_bytes(dir.work() / "base.yaml", kBase);
+  // Nine runs of some 0.2 s each, one at a time: the study is killed in the middle.
+  write_bytes(dir.work() / "s.yaml", "scene: base.yaml\nseeds: 3\njobs: 1\nparameters:\n  - key: container.max\n"
+                                     "    values: [[0.4, 0.4, 0.4], [0.45, 0.4, 0.4], [0.5, 0.4, 0.4]]\n");
+  write_bytes(dir.work() / "whole.yaml", "scene: base.yaml\nseeds: 3\noutput: whole\nparameters:\n  - key: container.max\n"
+                                         "    values: [[0.4, 0.4, 0.4], [0.45, 0.4, 0.4], [0.5, 0.4, 0.4]]\n");
+  const std::string start = "cd " + quoted(dir.work().string()) + " && setsid " + quoted(frontpack_binary()) +
+                            " study s.yaml --no-plots > first.txt 2>&1 < /dev/null & echo $! > " + quoted((dir.capture() / "pid").string());
+  ASSERT_EQ(std::system(start.c_str()), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const pid_t pid = std::stoi(read_bytes(dir.capture() / "pid"));
+  const auto records = [&] {
+    std::vector<fs::path> done;
+    if (fs::exists(dir.work() / "s.out/runs"))
+      for (const auto& e : fs::directory_iterator(dir.work() / "s.out/runs"))
+        if (fs::exists(e.path() / "record.json")) done.push_back(e.path() / "record.json");
+    return done;
+  };
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (records().size() < 3 && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ::kill(-pid, SIGKILL);  // the study and the run it was waiting for
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  const std::vector<fs::path> before = records();
+  ASSERT_GE(before.size(), 3u);
+  ASSERT_LT(before.size(), 9u) << "the study ended before it was killed: make its runs longer";
+  std::map<fs::path, ino_t> inodes;
+  for (const auto& p : before) inodes[p] = inode(p);
+
+  const RunResult again = run_frontpack(dir, "study s.yaml --no-plots");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.out.find("9 runs (" + std::to_string(before.size()) + " kept from before, " + std::to_string(9 - before.size()) + " run now)"),
+            std::string::npos)
+      << again.out;
+  for (const auto& [p, ino] : inodes) EXPECT_EQ(inode(p), ino) << p << " was written again";
+  // What it ends with is what an uninterrupted study gives: the same packings.
+  ASSERT_EQ(run_frontpack(dir, "study whole.yaml --no-plots -q").exit_code, 0);
+  const auto rows = csv_rows(read_bytes(dir.work() / "s.out/results.csv"));
+  const auto whole = csv_rows(read_bytes(dir.work() / "whole/results.csv"));
+  ASSERT_EQ(rows.size(), 9u);
+  ASSERT_EQ(whole.size(), 9u);
+  for (std::size_t i = 0; i < 9; ++i) {
+    EXPECT_EQ(rows[i].at("run"), whole[i].at("run"));
+    EXPECT_EQ(rows[i].at("metrics.volume_fraction_container"), whole[i].at("metrics.volume_fraction_container"));
+    EXPECT_EQ(read_bytes(dir.work() / "s.out/runs" / rows[i].at("run") / "packing.csv"),
+              read_bytes(dir.work() / "whole/runs" / rows[i].at("run") / "packing.csv"));
+  }
+  // A third start keeps all; a changed base scene keeps none.
+  EXPECT_NE(run_frontpack(dir, "study s.yaml --no-plots").out.find("9 runs (9 kept from before, 0 run now)"), std::string::npos);
+  write_bytes(dir.work() / "base.yaml", std::string(kBase) + "packer: {front: fifo}\n");
+  EXPECT_NE(run_frontpack(dir, "study s.yaml --no-plots").out.find("9 runs (0 kept from before, 9 run now)"), std::string::npos);
+}
+
+TEST(CliStudy, ABadStudyIsRefusedBeforeAnyRun) {
+  TempDir dir;
+  write_bytes(dir.work() / "base.yaml", kBase);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"scene: base.yaml\nseed: 3\n", "s.yaml:2:1: key 'seed': unknown key (did you mean 'seeds'?)"},
+      {"scene: nothere.yaml\n", "nothere.yaml"},
+      {"scene: base.yaml\nparameters:\n  - key: packer.front\n    values: [closest, fifoo]\n",
+       "s.yaml:4:23: key 'packer.front': unknown value 'fifoo' (did you mean 'fifo'?)"},
+      {"scene: base.yaml\nparameters:\n  - key: packer.front\n    values: [closest, fifoo]\n", "run packer.front=fifoo,seed=1"},
+      {"scene: base.yaml\nparameters:\n  - name: c\n    cases:\n      a: {particles.radius.max: -1}\n",
+       "s.yaml:5:33: key 'particles.radius.max': must be positive"},
+      {"scene: base.yaml\nparameters:\n  - key: packer.front\n    values: [fifo, fifo]\n", "the value 'fifo' is given twice"},
+      {"scene: base.yaml\nparameters:\n  - key: a..b\n    values: [1]\n", "s.yaml:3:10: key 'parameters[0].key': 'a..b' is not a scene key"},
+      {"scene: base.yaml\nseeds: 0\n", "a count of seeds is 1 .."},
+      {"scene: base.yaml\nplots: [{x: nope, y: n}]\n", "'nope' is not one of the study's parameters"},
+  };
+  for (const auto& [study, message] : cases) {
+    write_bytes(dir.work() / "s.yaml", study);
+    const RunResult r = run_frontpack(dir, "study s.yaml");
+    EXPECT_EQ(r.exit_code, 2) << study << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << study << "\n" << r.err;
+    EXPECT_FALSE(fs::exists(dir.work() / "s.out/runs")) << study;
+  }
+}
+
+TEST(CliStudy, AFailedRunIsReportedAndTheOthersKept) {
+  TempDir dir;
+  write_bytes(dir.work() / "base.yaml", kBase);
+  // r_max 0.2 cannot fit the box: refused by the scene check before any run.
+  write_bytes(dir.work() / "s.yaml", "scene: base.yaml\nparameters:\n  - key: particles.radius.max\n    values: [0.02, 0.2]\n");
+  RunResult r = run_frontpack(dir, "study s.yaml --no-plots");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_FALSE(fs::exists(dir.work() / "s.out/runs"));
+  // A run that fails while running (its packing cannot be written: a folder is in the way) is
+  // a row with its message; the study exits 1 and the other runs are there.
+  write_bytes(dir.work() / "s.yaml", "scene: base.yaml\nparameters:\n  - key: particles.radius.max\n    values: [0.02, 0.025]\n");
+  fs::create_directories(dir.work() / "s.out/runs/particles.radius.max=0.025,seed=1/packing.csv");
+  r = run_frontpack(dir, "study s.yaml --no-plots");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("1 of 2 runs failed"), std::string::npos) << r.err;
+  const auto rows = csv_rows(read_bytes(dir.work() / "s.out/results.csv"));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].at("status"), "ok");
+  EXPECT_EQ(rows[1].at("status"), "failed");
+  EXPECT_NE(rows[1].at("message").find("exit"), std::string::npos) << rows[1].at("message");
+}
+
+}  // namespace
+}  // namespace fptest
