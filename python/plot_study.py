@@ -89,6 +89,10 @@ def draw_against(ax, rows, parameters, x_name, y_key):
     for label, points in series(rows, parameters, x_name, y_key).items():
         ax.errorbar([xs[p[0]] for p in points], [p[1] for p in points], yerr=[p[2] for p in points],
                     marker="o", capsize=3, label=label)
+    values = [y for line in ax.get_lines() for y in line.get_ydata()]
+    positive = [v for v in values if v > 0]
+    if positive and len(positive) == len(values) and max(positive) > 30 * min(positive):
+        ax.set_yscale("log")  # rates of different families span orders of magnitude
     if not parameter["numeric"]:
         ax.set_xticks(list(xs.values()))
         ax.set_xticklabels(list(xs.keys()), rotation=30 if len(xs) > 4 else 0)
@@ -108,7 +112,7 @@ def main():
     drawn = []
     os.makedirs(out_dir, exist_ok=True)
     for p in parameters:
-        fig, axes = plt.subplots(1, 3, figsize=(15, 4.2))
+        fig, axes = plt.subplots(1, 3, figsize=(15, 4.2), gridspec_kw={"wspace": 0.3})
         for ax, key in zip(axes, (VF, Z, RATE)):
             if any(key in r for r in rows):
                 draw_against(ax, rows, parameters, p["name"], key)

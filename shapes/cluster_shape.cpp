@@ -107,9 +107,28 @@ std::string ClusterShape<D>::definition_json() const {
 template <int D>
 ShapePrototype<D> cluster_prototype(const ShapeParameters& p) {
   const ParameterReader r(p);
-  r.check_known({"centers", "radii"}, "cluster");
-  const auto centers = r.points("centers", "the member centres, a list of points", D);
-  const auto radii = r.list("radii", "the member radii, one per centre");
+  r.check_known({"centers", "radii", "preset"}, "cluster");
+  std::vector<std::vector<double>> centers;
+  std::vector<double> radii;
+  if (r.has("preset")) {
+    // Clumps that are the same in 2D and 3D (their members in the plane z = 0), so that one
+    // template serves both dimensions (experiments/2d-vs-3d): equal members, each touching the others.
+    if (r.has("centers") || r.has("radii")) r.fail("preset", "give either a preset or centers and radii");
+    const std::string name = r.word("preset", "dimer | trimer");
+    if (name == "dimer") {
+      centers = {{-1, 0}, {1, 0}};
+    } else if (name == "trimer") {
+      const double c = 2 / std::sqrt(3.0);  // circumradius of the triangle of side 2
+      centers = {{0, c}, {-1, -c / 2}, {1, -c / 2}};
+    } else {
+      r.fail("preset", "unknown cluster preset '" + name + "' (dimer: two touching equal members; trimer: three in a triangle)");
+    }
+    for (auto& x : centers) x.resize(D, 0.0);
+    radii.assign(centers.size(), 1.0);
+  } else {
+    centers = r.points("centers", "the member centres, a list of points (or a preset: dimer | trimer)", D);
+    radii = r.list("radii", "the member radii, one per centre");
+  }
   if (centers.empty()) r.fail("centers", "a cluster needs at least one member");
   if (radii.size() != centers.size())
     r.fail("radii", "has " + std::to_string(radii.size()) + " radii for " + std::to_string(centers.size()) +

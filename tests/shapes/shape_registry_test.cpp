@@ -6,6 +6,7 @@
 
 #include "core/io/scene_error.hpp"
 #include "shape_test_support.hpp"
+#include "shapes/cluster_shape.hpp"
 #include "shapes/convex_polytope_shape.hpp"
 #include "shapes/shape_parameters.hpp"
 
@@ -151,6 +152,41 @@ TEST(ShapeFamilies, BadClusters) {
             std::string::npos);
   p.lists["centers"] = {1.0, 2.0, 3.0};
   EXPECT_NE(error_of<3>(make_spec("cluster", p)).find("expected a list of 3D points"), std::string::npos);
+}
+
+/// The members of a cluster preset in dimension D.
+template <int D>
+std::vector<Ball<D>> preset_members(const std::string& name) {
+  ParticleTemplateSpec spec;
+  spec.family = "cluster";
+  spec.parameters.strings["preset"] = name;
+  const ShapePrototype<D> p = ShapeFamilies::builtin().prototype<D>(spec);
+  EXPECT_NEAR(p.shape->bounding_radius(), 1.0, 1e-12) << name;
+  return dynamic_cast<const ClusterShape<D>&>(*p.shape).members();
+}
+
+TEST(ShapeFamilies, ClusterPresetsAreTheSameClumpIn2DAnd3D) {
+  for (const auto& [name, count] : std::vector<std::pair<std::string, std::size_t>>{{"dimer", 2}, {"trimer", 3}}) {
+    const auto m2 = preset_members<2>(name);
+    const auto m3 = preset_members<3>(name);
+    ASSERT_EQ(m2.size(), count) << name;
+    ASSERT_EQ(m3.size(), count) << name;
+    for (std::size_t i = 0; i < count; ++i) {
+      EXPECT_NEAR(m2[i].radius, m2[0].radius, 1e-15) << name;  // equal members
+      EXPECT_NEAR(m3[i].radius, m2[i].radius, 1e-15) << name;
+      EXPECT_NEAR((m3[i].center.head<2>() - m2[i].center).norm(), 0.0, 1e-15) << name;
+      EXPECT_EQ(m3[i].center.z(), 0.0) << name;  // in the plane z = 0
+      for (std::size_t j = 0; j < i; ++j)          // each touching the others
+        EXPECT_NEAR((m2[i].center - m2[j].center).norm(), 2 * m2[0].radius, 1e-14) << name;
+    }
+  }
+  ParticleTemplateSpec spec;
+  spec.family = "cluster";
+  spec.parameters.strings["preset"] = "tetramer";
+  EXPECT_NE(error_of<3>(spec).find("unknown cluster preset 'tetramer' (dimer: "), std::string::npos) << error_of<3>(spec);
+  spec.parameters.strings["preset"] = "dimer";
+  spec.parameters.lists["radii"] = {1.0};
+  EXPECT_NE(error_of<2>(spec).find("give either a preset or centers and radii"), std::string::npos) << error_of<2>(spec);
 }
 
 TEST(ShapeFamilies, BadEllipseAxes) {
