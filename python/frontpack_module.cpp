@@ -309,15 +309,23 @@ PYBIND11_MODULE(frontpack, m) {
         const ShapeFamilies& families = ShapeFamilies::builtin();
         py::dict out;
         for (const std::string& name : families.names()) {
+          const ShapeFamilyInfo& info = families.info(name);
           py::list dims;
           for (const int d : {2, 3})
             if (families.in_dimension(name, d)) dims.append(d);
-          out[py::str(name)] = dims;
+          py::dict parameters;
+          for (const auto& [parameter, meaning] : info.parameters) parameters[py::str(parameter)] = meaning;
+          py::dict family;
+          family["dimensions"] = dims;
+          family["summary"] = info.summary;
+          family["parameters"] = parameters;
+          family["size_on"] = info.size_on;
+          out[py::str(name)] = family;
         }
         return out;
       },
-      "The shape families a scene's `shape:` may name, each with the dimensions it exists in (README: Non-spherical "
-      "particles, for their parameters).");
+      "The shape families a scene's `shape:` may name: {name: {'dimensions': [2, 3], 'summary': ..., 'parameters': "
+      "{name: meaning}, 'size_on': [the dimensions a size may be drawn on]}} (README: Non-spherical particles).");
   m.def("pack", &pack, py::arg("scene"), py::kw_only(), py::arg("seed") = py::none(), py::arg("threads") = py::none(),
         py::arg("progress") = py::none(), py::arg("set") = py::none(),
         "Packs a scene (a path to a scene file, or a dict with its schema) as `frontpack pack` does, without writing "

@@ -107,7 +107,6 @@ std::string ClusterShape<D>::definition_json() const {
 template <int D>
 ShapePrototype<D> cluster_prototype(const ShapeParameters& p) {
   const ParameterReader r(p);
-  r.check_known({"centers", "radii", "preset"}, "cluster");
   std::vector<std::vector<double>> centers;
   std::vector<double> radii;
   if (r.has("preset")) {

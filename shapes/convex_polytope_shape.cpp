@@ -171,9 +171,6 @@ ShapePrototype<D> convex_polytope_prototype(const ShapeParameters& p) {
   const ParameterReader r(p);
   const std::string family = ConvexPolytopeShape<D>::kKind;
   const std::string shortcut = D == 2 ? "sides" : "platonic";
-  std::vector<std::string> known = {"vertices", shortcut};
-  if constexpr (D == 3) known.push_back("preset");
-  r.check_known(known, family);
   const int given = int(r.has("vertices")) + int(r.has(shortcut)) + int(D == 3 && r.has("preset"));
   if (given > 1) r.fail(shortcut, "give one of 'vertices', '" + shortcut + "'" + (D == 3 ? " or 'preset'" : "") + ", not several");
   if (given == 0) r.fail("vertices", "missing: the " + family + "'s vertices (or '" + shortcut + "')");

@@ -78,7 +78,6 @@ std::string CylinderShape::definition_json() const {
 
 ShapePrototype<3> cylinder_prototype(const ShapeParameters& p) {
   const ParameterReader r(p);
-  r.check_known({"aspect_ratio"}, "cylinder");
   const double k = r.number_in("aspect_ratio", "diameter / height", 0.0, std::numeric_limits<double>::infinity());
   const double h = 1 / std::hypot(1.0, k);  // r = k h and r^2 + h^2 = 1
   auto shape = std::make_shared<CylinderShape>(k * h, h);

@@ -73,7 +73,6 @@ std::string EllipsoidShape<D>::definition_json() const {
 template <int D>
 ShapePrototype<D> ellipsoid_prototype(const ShapeParameters& p) {
   const ParameterReader r(p);
-  r.check_known({"axes"}, EllipsoidShape<D>::kKind);
   const auto axes = r.list("axes", D == 2 ? "the semi-axis ratios [a, b]" : "the semi-axis ratios [a, b, c]");
   if (static_cast<int>(axes.size()) != D)
     r.fail("axes", "needs " + std::to_string(D) + " semi-axes in " + std::to_string(D) + "D (got " +

@@ -16,7 +16,7 @@ double equivalent_radius(double measure) {
 
 template <int D>
 ShapePrototype<D> sphere_prototype(const ShapeParameters& p) {
-  ParameterReader(p).check_known({}, "sphere");
+  (void)p;  // takes no parameter (the registry refuses any)
   return {std::make_shared<SphereShape<D>>(1.0),
           {{"circumscribed_radius", 1.0}, {"radius", 1.0}, {"diameter", 2.0}, {"equivalent_radius", 1.0}}};
 }
@@ -24,7 +24,6 @@ ShapePrototype<D> sphere_prototype(const ShapeParameters& p) {
 template <int D>
 ShapePrototype<D> spherocylinder_prototype(const ShapeParameters& p) {
   const ParameterReader r(p);
-  r.check_known({"aspect_ratio"}, "spherocylinder");
   const double k = r.number_in("aspect_ratio", "width / total length", 0.0, 1.0);
   auto shape = std::make_shared<SpherocylinderShape<D>>(1.0 - k, k);
   return {shape,

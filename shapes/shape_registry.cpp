@@ -17,9 +17,9 @@ const ShapeFamilies& ShapeFamilies::builtin() {
   return families;
 }
 
-void ShapeFamilies::add(const std::string& name, ShapeFamilyFactory<2> in_2d, ShapeFamilyFactory<3> in_3d) {
+void ShapeFamilies::add(const std::string& name, ShapeFamilyFactory<2> in_2d, ShapeFamilyFactory<3> in_3d, ShapeFamilyInfo info) {
   if (!in_2d && !in_3d) throw std::logic_error("shape family '" + name + "' has no factory in 2D nor in 3D");
-  if (!families_.emplace(name, Family{std::move(in_2d), std::move(in_3d)}).second)
+  if (!families_.emplace(name, Family{std::move(in_2d), std::move(in_3d), std::move(info)}).second)
     throw std::logic_error("shape family '" + name + "' registered twice");
 }
 
@@ -59,6 +59,9 @@ ShapePrototype<D> ShapeFamilies::prototype(const ParticleTemplateSpec& spec) con
     reader.fail("shape", "shape '" + spec.family + "' does not exist in " + std::to_string(D) + "D (known in " +
                              std::to_string(D) + "D: " + listed(in_d) + ")");
 
+  std::vector<std::string> known;
+  for (const auto& [name, meaning] : it->second.info.parameters) known.push_back(name);
+  reader.check_known(known, spec.family);
   ShapePrototype<D> proto = make(spec.parameters);
   if (!proto.shape || proto.dimensions.count("circumscribed_radius") == 0)
     throw std::logic_error("shape family '" + spec.family + "' returned an incomplete prototype");

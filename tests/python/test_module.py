@@ -190,8 +190,13 @@ def test_shapes_have_poses(tmp_path):
 
 def test_the_shape_families_and_their_dimensions():
     families = frontpack.shape_families()
-    assert families["sphere"] == [2, 3] and families["ellipse"] == [2] and families["polyhedron"] == [3]
-    for name, dims in families.items():
+    assert families["sphere"]["dimensions"] == [2, 3] and families["ellipse"]["dimensions"] == [2]
+    assert families["polyhedron"]["dimensions"] == [3]
+    assert set(families["cluster"]["parameters"]) == {"centers", "radii", "preset"}
+    assert families["spherocylinder"]["size_on"][0] == "circumscribed_radius" and "length" in families["spherocylinder"]["size_on"]
+    for name, family in families.items():
+        dims = family["dimensions"]
+        assert family["summary"] and all(family["parameters"].values())
         scene = {"dimension": dims[0], "container": {"type": "box" if dims[0] == 3 else "rectangle",
                                                      "min": [0] * dims[0], "max": [1] * dims[0]},
                  "particles": [{"shape": name, "size": {"distribution": "constant", "value": 0.1}}],

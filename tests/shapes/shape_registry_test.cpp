@@ -1,6 +1,7 @@
 // The family registry and the parameter reader: every family resolves in the dimensions it
 // exists in, and every bad template is a SceneError that names the file, line and key.
 #include <cmath>
+#include <map>
 
 #include <gtest/gtest.h>
 
@@ -187,6 +188,45 @@ TEST(ShapeFamilies, ClusterPresetsAreTheSameClumpIn2DAnd3D) {
   spec.parameters.strings["preset"] = "dimer";
   spec.parameters.lists["radii"] = {1.0};
   EXPECT_NE(error_of<2>(spec).find("give either a preset or centers and radii"), std::string::npos) << error_of<2>(spec);
+}
+
+/// Every family's description is what its factory does: a template of each, in each dimension
+/// the family exists in, has exactly the dimensions the description lists, and every parameter
+/// the description names is accepted (the registry refuses any other).
+TEST(ShapeFamilies, TheDescriptionsAreTheFactories) {
+  const ShapeFamilies& families = ShapeFamilies::builtin();
+  std::map<std::string, ShapeParameters> examples;
+  examples["sphere"];
+  examples["spherocylinder"].numbers["aspect_ratio"] = 0.5;
+  examples["cluster"].strings["preset"] = "dimer";
+  examples["polygon"].numbers["sides"] = 5;
+  examples["polyhedron"].strings["preset"] = "cube";
+  examples["ellipse"].lists["axes"] = {1, 0.5};
+  examples["ellipsoid"].lists["axes"] = {1, 0.5, 0.3};
+  examples["cylinder"].numbers["aspect_ratio"] = 1;
+  for (const std::string& name : families.names()) {
+    SCOPED_TRACE(name);
+    ASSERT_EQ(examples.count(name), 1u) << "add an example of the new family here";
+    const ShapeFamilyInfo& info = families.info(name);
+    EXPECT_FALSE(info.summary.empty());
+    ASSERT_FALSE(info.size_on.empty());
+    EXPECT_EQ(info.size_on.front(), "circumscribed_radius");
+    for (const auto& [parameter, meaning] : info.parameters) EXPECT_FALSE(meaning.empty()) << parameter;
+    const auto dimensions_of = [](const auto& proto) {
+      std::vector<std::string> names{"circumscribed_radius"};
+      for (const auto& [n, v] : proto.dimensions)
+        if (n != "circumscribed_radius") names.push_back(n);
+      return names;
+    };
+    ParticleTemplateSpec spec = make_spec(name, examples[name]);
+    if (families.in_dimension(name, 2)) EXPECT_EQ(dimensions_of(families.prototype<2>(spec)), info.size_on);
+    if (families.in_dimension(name, 3)) EXPECT_EQ(dimensions_of(families.prototype<3>(spec)), info.size_on);
+    // A parameter the description does not name is refused, naming those it does.
+    spec.parameters.numbers["bogus"] = 1;
+    const std::string error = families.in_dimension(name, 3) ? error_of<3>(spec) : error_of<2>(spec);
+    EXPECT_NE(error.find("unknown parameter 'bogus' of shape '" + name + "'"), std::string::npos) << error;
+    for (const auto& [parameter, meaning] : info.parameters) EXPECT_NE(error.find(parameter), std::string::npos) << error;
+  }
 }
 
 TEST(ShapeFamilies, BadEllipseAxes) {
