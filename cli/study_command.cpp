@@ -55,7 +55,7 @@ void check_runs(const StudySpec& spec, std::vector<StudyRun>& runs) {
       continue;
     }
     try {
-      Scene scene = load_scene(spec.scene_path, run.overrides);
+      Scene scene = load_scene(run.scene_path, run.overrides);
       prepare_scene(scene, run.seed, spec.threads);
       run.shapes = !scene.particle_templates.empty();
     } catch (const SceneError& e) {
@@ -138,7 +138,10 @@ std::string summary_of(const StudyRow& row) {
 StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o) {
   std::vector<StudyRun> runs = study_runs(spec);
   check_runs(spec, runs);
-  const std::string base_text = read_document_file(spec.scene_path, "scene", "scenes/demo.yaml", kMaxSceneBytes);
+  std::map<std::string, std::string> base_texts;  // per base scene: a done run's record must have its text
+  for (const StudyRun& run : runs)
+    if (!base_texts.count(run.scene_path))
+      base_texts[run.scene_path] = read_document_file(run.scene_path, "scene", "scenes/demo.yaml", kMaxSceneBytes);
   fs::create_directories(fs::path(spec.output_dir) / "runs");
 
   StudyOutcome out;
@@ -164,7 +167,7 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o) {
 
   std::deque<std::size_t> waiting;
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    if (study_run_done(spec, runs[i], base_text)) {
+    if (study_run_done(spec, runs[i], base_texts.at(runs[i].scene_path))) {
       const std::string record = read_text(study_run_files(spec, runs[i]).record);
       ++out.kept;
       finish(i, status_of(record), "", record);
@@ -184,7 +187,7 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o) {
       const StudyRunFiles files = study_run_files(spec, runs[i]);
       fs::create_directories(files.folder);
       fs::remove(files.record);  // another study's, or a run killed before it ended
-      std::vector<std::string> argv{o.executable, "pack", spec.scene_path};
+      std::vector<std::string> argv{o.executable, "pack", runs[i].scene_path};
       for (const auto& c : runs[i].overrides) argv.insert(argv.end(), {"--set", c.key + "=" + c.value});
       argv.insert(argv.end(), {"--seed", std::to_string(runs[i].seed), "-j", std::to_string(spec.threads), "-q", "--record",
                                files.record, "-o", files.packing});

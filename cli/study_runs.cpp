@@ -38,11 +38,13 @@ std::vector<StudyRun> study_runs(const StudySpec& spec) {
       StudyRun run;
       run.levels = levels;
       run.seed = seed;
+      run.scene_path = spec.scene_path;
       for (std::size_t p = 0; p < spec.parameters.size(); ++p) {
         const StudyParameter& par = spec.parameters[p];
         const StudyLevel& level = par.levels[levels[p]];
         run.name += file_name_part(par.name) + "=" + file_name_part(level.label) + ",";
         run.overrides.insert(run.overrides.end(), level.overrides.begin(), level.overrides.end());
+        if (!level.scene_path.empty()) run.scene_path = level.scene_path;
       }
       run.name += "seed=" + std::to_string(seed);
       if (const int n = used[run.name]++; n > 0) run.name += "~" + std::to_string(n);
@@ -74,7 +76,8 @@ bool study_run_done(const StudySpec& spec, const StudyRun& run, const std::strin
   std::vector<std::string> changes;
   for (const auto& o : run.overrides) changes.push_back(o.key + "=" + o.value);
   const nlohmann::json recorded = scene.value("overrides", nlohmann::json::array());
-  return scene.value("text", std::string()) == base_scene_text && recorded == nlohmann::json(changes) &&
+  return scene.value("path", std::string()) == run.scene_path && scene.value("text", std::string()) == base_scene_text &&
+         recorded == nlohmann::json(changes) &&
          record["seed"] == nlohmann::json(run.seed);
 }
 

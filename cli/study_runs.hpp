@@ -17,6 +17,7 @@ struct StudyRun {
   std::uint64_t seed = 1;
   std::string name;                 ///< "shape=ellipse,ratio=2,seed=1": its folder under runs/, and the CSV's `run`
   std::vector<SceneOverride> overrides;
+  std::string scene_path;           ///< its base scene: the study's, or the one its values name
   bool shapes = false;              ///< a scene of shapes (its packing is written as json), known once its scene is read
 };
 
@@ -30,8 +31,8 @@ struct StudyRunFiles {
 };
 StudyRunFiles study_run_files(const StudySpec& spec, const StudyRun& run);
 
-/// Whether the run's record is there and is the record of this run: the same base scene text,
-/// the same changes, the same seed (and its packing is there when the study keeps packings).
+/// Whether the run's record is there and is the record of this run: the same base scene (path
+/// and text), the same changes, the same seed (and its packing is there when the study keeps packings).
 bool study_run_done(const StudySpec& spec, const StudyRun& run, const std::string& base_scene_text);
 
 }  // namespace fp

@@ -25,8 +25,9 @@ def sh(*cmd):
         return "?"
 
 
-def provenance_lines(frontpack, argv):
-    """The header every RESULTS.md starts with: exact command, machine, date, commit, binary."""
+def provenance_lines(frontpack, argv, version=None):
+    """The header every RESULTS.md starts with: exact command, machine, date, commit, binary
+    (`version`: what it says of itself, default `frontpack --version`; the module: its __version__)."""
     model = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "?")
     memkb = next(int(l.split()[1]) for l in open("/proc/meminfo") if l.startswith("MemTotal"))
     commit = sh("git", "rev-parse", "--short", "HEAD")
@@ -44,7 +45,7 @@ def provenance_lines(frontpack, argv):
         f"* machine: {sh('nproc')} CPUs (`nproc`), {model}, Linux {platform.release()}, {memkb / 2**20:.1f} GiB memory",
         f"* date: {datetime.datetime.now().astimezone().strftime('%Y-%m-%d %H:%M %Z')}",
         f"* repository commit: `{commit}` ({state})",
-        f"* binary: `{frontpack}` ({sh(frontpack, '--version')}, sha256 {digest}…)",
+        f"* binary: `{frontpack}` ({version or sh(frontpack, '--version')}, sha256 {digest}…)",
     ]
 
 

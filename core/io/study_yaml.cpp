@@ -49,7 +49,13 @@ std::string scene_key(const Value& where, const std::string& key) {
   }
 }
 
-StudyParameter parse_parameter(const Value& v) {
+/// A file named in the study, relative to its folder.
+std::string study_relative(const Context& ctx, const std::string& p) {
+  const std::filesystem::path f(p);
+  return (f.is_absolute() ? f : ctx.folder / f).lexically_normal().string();
+}
+
+StudyParameter parse_parameter(const Value& v, const Context& ctx) {
   const Map m = v.map();
   m.check_known({"key", "values", "name", "cases"});
   StudyParameter p;
@@ -64,10 +70,14 @@ StudyParameter parse_parameter(const Value& v) {
       const Map changes = cases.get(label).map();
       for (const std::string& key : changes.keys()) {
         const Value change = *changes.find(key);
+        if (key == "scene") {
+          level.scene_path = study_relative(ctx, change.string());
+          continue;
+        }
         scene_key(change, key);
         level.overrides.push_back(override_at(change, key));
       }
-      if (level.overrides.empty()) cases.get(label).fail("a case changes at least one key");
+      if (level.overrides.empty() && level.scene_path.empty()) cases.get(label).fail("a case changes at least one key");
       p.levels.push_back(std::move(level));
     }
     if (p.levels.empty()) m.get("cases").fail("give at least one case");
@@ -80,8 +90,13 @@ StudyParameter parse_parameter(const Value& v) {
     for (const Value& x : values) {
       if (!x.node().IsDefined() || x.node().IsNull()) x.fail("a value is missing");
       StudyLevel level;
-      level.overrides.push_back(override_at(x, key));
-      level.label = level.overrides.back().value;
+      if (key == "scene") {
+        level.label = x.string();
+        level.scene_path = study_relative(ctx, level.label);
+      } else {
+        level.overrides.push_back(override_at(x, key));
+        level.label = level.overrides.back().value;
+      }
       p.levels.push_back(std::move(level));
     }
   }
@@ -117,10 +132,7 @@ StudySpec parse_study(const std::string& text, const std::string& source_name) {
   s.text = text;
   const Map root(ctx, doc, "", doc.Mark().is_null() ? start : doc.Mark());
   root.check_known({"scene", "seeds", "parameters", "jobs", "threads", "output", "packings", "plots"});
-  const auto resolve = [&](const std::string& p) {
-    const std::filesystem::path f(p);
-    return (f.is_absolute() ? f : ctx.folder / f).lexically_normal().string();
-  };
+  const auto resolve = [&](const std::string& p) { return study_relative(ctx, p); };
   const Value scene = root.get("scene", "the base scene file, relative to the study file's folder");
   s.scene_path = resolve(scene.string());
   if (auto v = root.find("seeds")) {
@@ -142,7 +154,7 @@ StudySpec parse_study(const std::string& text, const std::string& source_name) {
   if (auto v = root.find("parameters")) {
     std::set<std::string> names;
     for (const Value& x : v->list()) {
-      s.parameters.push_back(parse_parameter(x));
+      s.parameters.push_back(parse_parameter(x, ctx));
       if (!names.insert(s.parameters.back().name).second) x.fail("a second parameter named '" + s.parameters.back().name + "'");
       runs *= s.parameters.back().levels.size();
       if (runs > kMaxStudyRuns) x.fail("the study would have more than " + std::to_string(kMaxStudyRuns) + " runs");

@@ -12,6 +12,8 @@
 //       name: the CSV column and plot axis (default: the key)
 //     - name*: a parameter whose cases change several keys at once
 //       cases*: {label: {dotted key: value, ...}, ...}  (e.g. ellipse: {dimension: 2, particles.shape: ellipse})
+//     The key `scene` (a case's, or `key: scene` with file names as values) changes the base scene
+//     itself: a file relative to the study file's folder (e.g. every named scene x a solver).
 //   jobs: runs at once, >= 1 (default: hardware threads / threads)
 //   threads: each run's threads, >= 1 (default 1)
 //   output: the study's folder, relative to the study file's folder (default: <study file name>.out)
@@ -30,6 +32,7 @@ namespace fp {
 struct StudyLevel {
   std::string label;
   std::vector<SceneOverride> overrides;
+  std::string scene_path;  ///< `scene: FILE` in a case (or `key: scene`): another base scene for its runs, resolved
 };
 
 struct StudyParameter {

@@ -223,6 +223,34 @@ TEST(CliStudy, KilledAndStartedAgainItKeepsWhatWasDone) {
   EXPECT_NE(run_frontpack(dir, "study s.yaml --no-plots").out.find("9 runs (0 kept from before, 9 run now)"), std::string::npos);
 }
 
+TEST(CliStudy, AParameterMayChangeTheBaseSceneItself) {
+  TempDir dir;
+  fs::create_directories(dir.work() / "scenes");
+  write_bytes(dir.work() / "scenes/a.yaml", kBase);
+  write_bytes(dir.work() / "scenes/b.yaml", "dimension: 2\ncontainer: {type: rectangle, min: [0, 0], max: [1, 1]}\n"
+                                            "particles: {radius: {distribution: uniform, min: 0.02, max: 0.03}}\n");
+  fs::create_directories(dir.work() / "studies");
+  write_bytes(dir.work() / "studies/s.yaml", "scene: ../scenes/a.yaml\nparameters:\n  - name: scene\n    cases:\n"
+                                             "      a: {scene: ../scenes/a.yaml}\n      b-fifo: {scene: ../scenes/b.yaml, packer.front: fifo}\n"
+                                             "  - key: packer.radius_pool\n    values: [1, 2]\n");
+  const RunResult r = run_frontpack(dir, "study studies/s.yaml --no-plots");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = csv_rows(read_bytes(dir.work() / "studies/s.out/results.csv"));
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[0].at("dimension"), "3");
+  EXPECT_EQ(rows[2].at("dimension"), "2");
+  for (const auto& row : rows) {
+    const bool b = row.at("scene") == "b-fifo";
+    const RunResult p = run_frontpack(dir, std::string("pack scenes/") + (b ? "b" : "a") + ".yaml -q -o p.csv --set packer.radius_pool=" +
+                                                row.at("packer.radius_pool") + (b ? " --set packer.front=fifo" : ""));
+    ASSERT_EQ(p.exit_code, 0) << p.err;
+    EXPECT_EQ(read_bytes(dir.work() / "p.csv"), read_bytes(dir.work() / "studies/s.out/runs" / row.at("run") / "packing.csv")) << row.at("run");
+  }
+  // A run's record is of its own base scene: changing b.yaml reruns b's runs only.
+  write_bytes(dir.work() / "scenes/b.yaml", read_bytes(dir.work() / "scenes/b.yaml") + "seed: 5\n");
+  EXPECT_NE(run_frontpack(dir, "study studies/s.yaml --no-plots").out.find("4 runs (2 kept from before, 2 run now)"), std::string::npos);
+}
+
 TEST(CliStudy, ABadStudyIsRefusedBeforeAnyRun) {
   TempDir dir;
   write_bytes(dir.work() / "base.yaml", kBase);
