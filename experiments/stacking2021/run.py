@@ -1,31 +1,29 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Paper 003's Tables 1-3 cases: graded stacking (`packer: {method: stacking}`) at the paper's
 densities, 2D and 3D, R = 7 and R = 2, gradations uniform by mass (and by count for 2D R = 7),
 both orders, three seeds; the front with the homogeneous target (`target:`) at the same solid
 fractions beside them; coordination histograms; time against N.
 
-Every run is `frontpack pack SCENE -o OUT.csv --record REC.json` on one core; the record gives
-the solid fraction, the cells' spread, the radii test, z and its histogram, the stacking's
-counters and the time.
+Every run is `frontpack.pack(scene, threads=1)` (the Python module: the command line's run, its
+record in memory); the record gives the solid fraction, the cells' spread, the radii test, z and
+its histogram, the stacking's counters and the time.
 
-Usage: run.py OUT_DIR [--seeds N] [--only GROUP,...]   (OUT_DIR/results.json; plots.py draws)
+Usage: PYTHONPATH=build-test run.py OUT_DIR [--seeds N] [--only GROUP,...]   (OUT_DIR/results.json; report.py)
 """
 import json
-import subprocess
 import sys
 import time
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
-from runkit import FRONTPACK  # noqa: E402
+import frontpack
 
-MASS7 = "{distribution: gradation, basis: mass, curve: [[0.058, 0], [0.4, 100]]}"
-COUNT7 = "{distribution: uniform, min: 0.029, max: 0.2}"
-MASS2 = "{distribution: gradation, basis: mass, curve: [[0.2, 0], [0.4, 100]]}"
+MASS7 = {"distribution": "gradation", "basis": "mass", "curve": [[0.058, 0], [0.4, 100]]}
+COUNT7 = {"distribution": "uniform", "min": 0.029, "max": 0.2}
+MASS2 = {"distribution": "gradation", "basis": "mass", "curve": [[0.2, 0], [0.4, 100]]}
 
 
 def box(d, a):
-    return f"{{type: box, min: [0, 0, 0], max: [{a}, {a}, {a}]}}" if d == 3 else f"{{type: rectangle, min: [0, 0], max: [{a}, {a}]}}"
+    return {"type": "box", "min": [0] * 3, "max": [a] * 3} if d == 3 else {"type": "rectangle", "min": [0, 0], "max": [a, a]}
 
 
 # group: dimension, container edge (cm), law, the paper's densities (low, middle, high)
@@ -38,23 +36,22 @@ GROUPS = {
 }
 # time against N: the same law in growing containers
 SCALING = {"3d-R2-mass": [3, 5, 8, 12, 18, 24], "2d-R2-mass": [25, 50, 100, 200]}
+STACKING = {"paper": {"method": "stacking", "order": "paper"}, "contacts_first": {"method": "stacking", "order": "contacts_first"},
+            "front": None}
 
 
-def run_case(out, name, d, edge, law, method_keys, phi, seed):
-    scene = out / f"{name}.yaml"
-    scene.write_text(f"dimension: {d}\nseed: {seed}\ncontainer: {box(d, edge)}\nparticles: {{radius: {law}}}\n"
-                     f"{method_keys}target: {{solid_fraction: {phi}}}\n")
-    rec = out / f"{name}.json"
+def run_case(name, d, edge, law, method, phi, seed):
+    scene = {"dimension": d, "seed": seed, "container": box(d, edge), "particles": {"radius": law},
+             "target": {"solid_fraction": phi}}
+    if STACKING[method]:
+        scene["packer"] = STACKING[method]
     t0 = time.monotonic()
-    p = subprocess.run([FRONTPACK, "pack", str(scene), "-o", str(out / f"{name}.csv"), "-q", "--record", str(rec), "-j", "1"],
-                       capture_output=True, text=True)
+    p = frontpack.pack(scene, threads=1)
     wall = time.monotonic() - t0
-    if p.returncode not in (0, 3):
-        raise SystemExit(f"{name}: exit {p.returncode}\n{p.stderr}")
-    r = json.loads(rec.read_text())
+    r = p.record
     m, c, a = r["metrics"], r["counters"], r["analysis"]
-    row = {"case": name, "dimension": d, "edge": edge, "phi": phi, "seed": seed, "exit": p.returncode, "particles": r["n"],
-           "vf": m["volume_fraction_container"], "cells_sd": m.get("volume_fraction_cells_std"),
+    row = {"case": name, "dimension": d, "edge": edge, "phi": phi, "seed": seed, "exit": 0 if p.valid else 3,
+           "particles": r["n"], "vf": m["volume_fraction_container"], "cells_sd": m.get("volume_fraction_cells_std"),
            "radii_p": a["radii_fit"]["p"],
            "z": m["mean_coordination"], "z_histogram": a["coordination"]["histogram"], "rattlers": m["rattler_fraction"],
            "pack_seconds": r["timings"]["pack"], "wall_seconds": wall}
@@ -83,12 +80,10 @@ def main():
             continue
         for phi in phis:
             for seed in range(1, seeds + 1):
-                for method, keys in (("paper", "packer: {method: stacking, order: paper}\n"),
-                                     ("contacts_first", "packer: {method: stacking, order: contacts_first}\n"),
-                                     ("front", "")):
+                for method in STACKING:
                     name = f"{group}-{phi}-{method}-s{seed}"
                     if name not in results:
-                        keep(run_case(out, name, d, edge, law, keys, phi, seed))
+                        keep(run_case(name, d, edge, law, method, phi, seed))
     for group, edges in SCALING.items():
         if only and group not in only:
             continue
@@ -96,7 +91,7 @@ def main():
         for edge in edges:
             name = f"scaling-{group}-{edge}"
             if name not in results:
-                keep(run_case(out, name, d, edge, law, "packer: {method: stacking, order: contacts_first}\n", phis[0], 1))
+                keep(run_case(name, d, edge, law, "contacts_first", phis[0], 1))
 
 
 if __name__ == "__main__":
