@@ -1,7 +1,8 @@
 #pragma once
 // Runs programs as child processes (posix_spawn, no shell), their stdout and stderr into a log
 // file, and waits for them one by one (waitpid on each pid: a host program's own children, e.g.
-// Python's, are never reaped here).
+// Python's, are never reaped here). Each is registered with the signal cleanup
+// (core/io/temp_file_registry.hpp): Ctrl-C or kill of this process reaches the children too.
 #include <string>
 #include <sys/types.h>
 #include <vector>
@@ -27,6 +28,7 @@ class ChildProcess {
  private:
   pid_t pid_ = -1;
   int code_ = -1;
+  int slot_ = -1;  ///< in the signal cleanup's table of children (core/io/temp_file_registry.hpp)
 };
 
 }  // namespace fp

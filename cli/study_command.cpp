@@ -142,7 +142,6 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o) {
   for (const StudyRun& run : runs)
     if (!base_texts.count(run.scene_path))
       base_texts[run.scene_path] = read_document_file(run.scene_path, "scene", "scenes/demo.yaml", kMaxSceneBytes);
-  fs::create_directories(fs::path(spec.output_dir) / "runs");
 
   StudyOutcome out;
   out.runs = runs.size();
@@ -165,6 +164,15 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o) {
     return j.value("info", nlohmann::json::object()).value("validation", std::string()) == "ok" ? "ok" : "invalid";
   };
 
+  if (o.list_only) {
+    for (const StudyRun& run : runs) {
+      const bool done = study_run_done(spec, run, base_texts.at(run.scene_path));
+      out.kept += done;
+      std::printf("%s  %s\n", done ? "kept  " : "to run", run.name.c_str());
+    }
+    return out;
+  }
+  fs::create_directories(fs::path(spec.output_dir) / "runs");
   std::deque<std::size_t> waiting;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (study_run_done(spec, runs[i], base_texts.at(runs[i].scene_path))) {
@@ -186,7 +194,8 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o) {
       waiting.pop_front();
       const StudyRunFiles files = study_run_files(spec, runs[i]);
       fs::create_directories(files.folder);
-      fs::remove(files.record);  // another study's, or a run killed before it ended
+      std::error_code ec;
+      fs::remove(files.record, ec);  // another study's, or a run killed before it ended
       std::vector<std::string> argv{o.executable, "pack", runs[i].scene_path};
       for (const auto& c : runs[i].overrides) argv.insert(argv.end(), {"--set", c.key + "=" + c.value});
       argv.insert(argv.end(), {"--seed", std::to_string(runs[i].seed), "-j", std::to_string(spec.threads), "-q", "--record",
@@ -237,6 +246,11 @@ int run_study_command(const std::string& study_path, StudyOptions options) {
     return report_failure(2);
   } catch (...) {
     return report_failure(1);
+  }
+  if (options.list_only) {
+    std::printf("frontpack study   %s: %zu runs, %zu kept from before, %zu to run\n", study_path.c_str(), out.runs, out.kept,
+                out.runs - out.kept);
+    return 0;
   }
   if (!options.quiet) {
     std::printf("frontpack study   %s: %zu runs (%zu kept from before, %zu run now), %zu invalid, %zu failed\n", study_path.c_str(),

@@ -22,6 +22,7 @@ struct StudyOptions {
   bool plots = true;
   std::string python = "/usr/bin/python3";
   bool quiet = false;                    ///< no line per run on stdout
+  bool list_only = false;                ///< --list: the runs (checked), each kept or to run, and nothing run
   std::function<void()> poll;            ///< called about every 20 ms while runs go on; may throw to stop them
   /// After each run, kept or ended: the run, its row, runs ended so far, runs in all.
   std::function<void(const StudyRun&, const StudyRow&, std::size_t, std::size_t)> on_run;

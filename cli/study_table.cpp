@@ -58,6 +58,7 @@ std::string study_csv(const std::vector<StudyRow>& rows) {
   for (std::size_t c = 0; c < columns.size(); ++c) out += (c ? "," : "") + csv_field(columns[c]);
   out += '\n';
   for (const auto& row : rows) {
+    if (row.keys.empty()) continue;  // a run not ended yet
     for (std::size_t c = 0; c < columns.size(); ++c) out += (c ? "," : "") + csv_field(study_value(row, columns[c]));
     out += '\n';
   }

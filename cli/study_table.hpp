@@ -21,8 +21,9 @@ struct StudyRow {
 StudyRow study_row(const StudySpec& spec, const StudyRun& run, const std::string& status, const std::string& message,
                    const std::string& record_text);
 
-/// The CSV of `rows`: the columns are the union of their keys, in order of first appearance;
-/// a value a run does not have is empty. Text with a comma, quote or newline is quoted.
+/// The CSV of `rows` (those of runs not ended yet, without keys, are left out): the columns are
+/// the union of their keys, in order of first appearance; a value a run does not have is empty.
+/// Text with a comma, quote or newline is quoted.
 std::string study_csv(const std::vector<StudyRow>& rows);
 
 /// The figure of a column, read back from a row ("" when the run has none).

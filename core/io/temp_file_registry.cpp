@@ -2,6 +2,7 @@
 
 #include <limits.h>  // PATH_MAX
 #include <pthread.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -22,6 +23,15 @@ char g_path[kMaxTempPaths][PATH_MAX];
 
 constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
 
+// Child processes (a study's runs), 0 = free: the signal is passed on to each.
+static_assert(std::atomic<pid_t>::is_always_lock_free);
+std::atomic<pid_t> g_child[kMaxChildProcesses];
+
+void signal_children(int sig) noexcept {
+  for (auto& c : g_child)
+    if (const pid_t pid = c.load(std::memory_order_acquire); pid > 0) ::kill(pid, sig);
+}
+
 void remove_all_now() noexcept {
   // Files first, then folders (which are empty once their files are gone), newest first.
   for (const int kind : {kFile, kFolder})
@@ -35,6 +45,7 @@ void remove_all_now() noexcept {
 
 extern "C" void on_cleanup_signal(int sig) {
   const int saved_errno = errno;
+  signal_children(sig);  // they clean up after themselves the same way
   remove_all_now();
   struct sigaction dfl {};
   dfl.sa_handler = SIG_DFL;
@@ -71,6 +82,18 @@ void unregister_temp_path(int slot) noexcept {
 }
 
 void remove_registered_temp_paths() noexcept { remove_all_now(); }
+
+int register_child_process(pid_t pid) {
+  for (int i = 0; i < kMaxChildProcesses; ++i) {
+    pid_t expected = 0;
+    if (g_child[i].compare_exchange_strong(expected, pid, std::memory_order_acq_rel)) return i;
+  }
+  throw std::runtime_error("more than " + std::to_string(kMaxChildProcesses) + " child processes at once");
+}
+
+void unregister_child_process(int slot) noexcept {
+  if (slot >= 0 && slot < kMaxChildProcesses) g_child[slot].store(0, std::memory_order_release);
+}
 
 void install_temp_file_cleanup() {
   static std::atomic<bool> installed{false};

@@ -1,11 +1,14 @@
 #pragma once
 // Temporary files that must not outlive an interrupted run. AtomicFile registers each of its
-// temporaries here; after install_temp_file_cleanup(), SIGINT, SIGTERM, SIGHUP and SIGQUIT
-// first remove every registered path, then kill the process as the signal would have.
+// temporaries here (and a study its runs' processes); after install_temp_file_cleanup(), SIGINT,
+// SIGTERM, SIGHUP and SIGQUIT first pass the signal on to every registered child, remove every
+// registered path, then kill the process as the signal would have.
 //
 // The handler may interrupt anything, malloc included, so the table is a fixed array of
-// fixed-size paths and the handler calls only unlink(), rmdir(), sigaction() and raise()
+// fixed-size paths and the handler calls only kill(), unlink(), rmdir(), sigaction() and raise()
 // (all async-signal-safe).
+#include <sys/types.h>
+
 #include <csignal>
 #include <string>
 
@@ -21,6 +24,15 @@ int register_temp_path(const std::string& path, bool folder = false);
 
 /// Forgets a slot (the path was renamed or removed). Ignores -1.
 void unregister_temp_path(int slot) noexcept;
+
+/// Child processes registered at once, at most (a study's runs at once).
+inline constexpr int kMaxChildProcesses = 1024;
+
+/// Registers a child process: those signals are passed on to it (kill) before this process
+/// cleans up and ends, so that `kill STUDY` stops its runs too. Returns the slot to unregister
+/// once the child has been waited for. Throws std::runtime_error if the table is full.
+int register_child_process(pid_t pid);
+void unregister_child_process(int slot) noexcept;
 
 /// Installs the handlers (idempotent). A signal that was ignored when the process started
 /// (SIGHUP under nohup, SIGINT in a background job) stays ignored. SIGXFSZ is ignored too,

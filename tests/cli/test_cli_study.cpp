@@ -3,6 +3,7 @@
 // figures), a study killed and started again keeps what was done, and bad studies are refused
 // before anything runs, naming the file, line and key.
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/stat.h>
 
 #include <chrono>
@@ -121,6 +122,11 @@ TEST(CliStudy, ThreeByThreeByThreeSeedsAreTheCommandLinesRuns) {
   TempDir dir;
   write_bytes(dir.work() / "base.yaml", kBase);
   write_bytes(dir.work() / "s.yaml", kStudy);
+  const RunResult list = run_frontpack(dir, "study s.yaml --list");
+  EXPECT_EQ(list.exit_code, 0) << list.err;
+  EXPECT_NE(list.out.find("to run  r_max=0.025,front=fifo_flat,seed=2\n"), std::string::npos) << list.out;
+  EXPECT_NE(list.out.find("27 runs, 0 kept from before, 27 to run"), std::string::npos) << list.out;
+  EXPECT_FALSE(fs::exists(dir.work() / "s.out"));  // listed, nothing run or made
   const RunResult r = run_frontpack(dir, "study s.yaml");
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   EXPECT_NE(r.out.find("27 runs (0 kept from before, 27 run now), 0 invalid, 0 failed"), std::string::npos) << r.out;
@@ -198,6 +204,11 @@ TEST(CliStudy, KilledAndStartedAgainItKeepsWhatWasDone) {
   ASSERT_LT(before.size(), 9u) << "the study ended before it was killed: make its runs longer";
   std::map<fs::path, ino_t> inodes;
   for (const auto& p : before) inodes[p] = inode(p);
+  // The table so far has the runs that had ended (the last one may have ended unseen), no others.
+  const auto so_far = csv_rows(read_bytes(dir.work() / "s.out/results.csv"));
+  EXPECT_GE(so_far.size() + 1, before.size());
+  EXPECT_LE(so_far.size(), before.size());
+  for (const auto& row : so_far) EXPECT_EQ(row.at("status"), "ok") << row.at("run");
 
   const RunResult again = run_frontpack(dir, "study s.yaml --no-plots");
   ASSERT_EQ(again.exit_code, 0) << again.err;
@@ -221,6 +232,47 @@ TEST(CliStudy, KilledAndStartedAgainItKeepsWhatWasDone) {
   EXPECT_NE(run_frontpack(dir, "study s.yaml --no-plots").out.find("9 runs (9 kept from before, 0 run now)"), std::string::npos);
   write_bytes(dir.work() / "base.yaml", std::string(kBase) + "packer: {front: fifo}\n");
   EXPECT_NE(run_frontpack(dir, "study s.yaml --no-plots").out.find("9 runs (0 kept from before, 9 run now)"), std::string::npos);
+}
+
+TEST(CliStudy, KillingTheStudyStopsItsRunsAndLeavesNoTemporary) {
+  TempDir dir;
+  // A name no other test uses: the runs are found by their command line (pgrep -f).
+  write_bytes(dir.work() / "base-sigterm.yaml", kBase);
+  // Runs of about a second (some 60,000 spheres each), two at once, killed as soon as they start.
+  write_bytes(dir.work() / "s.yaml", "scene: base-sigterm.yaml\nseeds: 2\njobs: 2\nparameters:\n  - key: container.max\n"
+                                     "    values: [[1.5, 1, 1], [1.6, 1, 1]]\n");
+  // SIGTERM to the study's process only (not its group): it passes the signal on to its runs.
+  const std::string start = "cd " + quoted(dir.work().string()) + " && { " + quoted(frontpack_binary()) +
+                            " study s.yaml --no-plots > first.txt 2>&1 < /dev/null & echo $! > " +
+                            quoted((dir.capture() / "pid").string()) + "; }";
+  ASSERT_EQ(std::system(start.c_str()), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const pid_t pid = std::stoi(read_bytes(dir.capture() / "pid"));
+  const auto runs_alive = [&] {
+    // [b]: the shell running pgrep has the pattern in its own command line, not what it matches
+    return std::system("pgrep -f 'frontpack pack [b]ase-sigterm.yaml' > /dev/null") == 0;
+  };
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!runs_alive() && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_TRUE(runs_alive()) << "no run started";
+  ::kill(pid, SIGTERM);
+  const auto stop = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  const auto study_alive = [&] {  // a zombie (no one may reap it in a container) counts as ended
+    const std::string stat = read_bytes("/proc/" + std::to_string(pid) + "/stat");
+    const auto close = stat.rfind(')');
+    return close != std::string::npos && close + 2 < stat.size() && stat[close + 2] != 'Z';
+  };
+  while ((study_alive() || runs_alive()) && std::chrono::steady_clock::now() < stop)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_FALSE(runs_alive()) << "a run outlived the study";
+  std::size_t records = 0;
+  for (const auto& e : fs::recursive_directory_iterator(dir.work() / "s.out")) {
+    EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path() << " left behind";
+    records += e.path().filename() == "record.json";
+  }
+  EXPECT_EQ(records, 0u) << "the runs went on to their end";
+  const RunResult again = run_frontpack(dir, "study s.yaml --no-plots --list");
+  EXPECT_NE(again.out.find("4 runs, 0 kept from before, 4 to run"), std::string::npos) << again.out;
 }
 
 TEST(CliStudy, AParameterMayChangeTheBaseSceneItself) {
