@@ -916,18 +916,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name, const
   ctx.file = source_name;
   ctx.folder = std::filesystem::path(source_name).parent_path();
 
-  YAML::Node doc;
-  try {
-    doc = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    ctx.fail(e.mark, "", "YAML syntax error: " + e.msg);
-  } catch (const std::bad_alloc&) {
-    throw SceneError(source_name, 0, 0, "", "out of memory while reading the scene file");
-  }
-  YAML::Mark start;  // line 0, column 0
-  start.line = 0;
-  start.column = 0;
-  if (!doc.IsDefined() || doc.IsNull()) ctx.fail(start, "", "the scene is empty (required keys: dimension, container, particles)");
+  YAML::Node doc = load_document(ctx, text, "scene", "required keys: dimension, container, particles");
   apply_overrides(doc, overrides);
   ctx.overrides = &overrides;
 
@@ -938,7 +927,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name, const
   ctx.read_files = &scene.read_files;
   ctx.tet_mesh = &scene.tet_mesh;
   try {
-    const Map root(ctx, doc, "", doc.Mark().is_null() ? start : doc.Mark());
+    const Map root = document_root(ctx, doc);
     root.check_known(
         {"dimension", "seed", "container", "particles", "packer", "stop", "target", "densify", "least_squares", "regions",
          "material", "output"});

@@ -117,20 +117,11 @@ StudySpec parse_study(const std::string& text, const std::string& source_name) {
   Context ctx;
   ctx.file = source_name;
   ctx.folder = std::filesystem::path(source_name).parent_path();
-  YAML::Node doc;
-  try {
-    doc = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    ctx.fail(e.mark, "", "YAML syntax error: " + e.msg);
-  }
-  YAML::Mark start;
-  start.line = 0;
-  start.column = 0;
-  if (!doc.IsDefined() || doc.IsNull()) ctx.fail(start, "", "the study is empty (required key: scene)");
+  const YAML::Node doc = load_document(ctx, text, "study", "required key: scene");
   StudySpec s;
   s.path = source_name;
   s.text = text;
-  const Map root(ctx, doc, "", doc.Mark().is_null() ? start : doc.Mark());
+  const Map root = document_root(ctx, doc);
   root.check_known({"scene", "seeds", "parameters", "jobs", "threads", "output", "packings", "plots"});
   const auto resolve = [&](const std::string& p) { return study_relative(ctx, p); };
   const Value scene = root.get("scene", "the base scene file, relative to the study file's folder");

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <new>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -100,6 +101,29 @@ struct Context {
                      changed ? message + " (in the scene as changed by " + describe_overrides(*overrides) + ")" : message);
   }
 };
+
+/// Where a document starts (line 1, column 1), for what is reported about it as a whole.
+inline YAML::Mark document_start() {
+  YAML::Mark start;
+  start.line = 0;
+  start.column = 0;
+  return start;
+}
+
+/// The document of `text` (a scene, a study), read for `ctx`: a syntax error, running out of
+/// memory and an empty document (`empty`: what it lacks) are SceneErrors at their place.
+inline YAML::Node load_document(const Context& ctx, const std::string& text, const std::string& what, const std::string& empty) {
+  YAML::Node doc;
+  try {
+    doc = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    ctx.fail(e.mark, "", "YAML syntax error: " + e.msg);
+  } catch (const std::bad_alloc&) {
+    throw SceneError(ctx.file, 0, 0, "", "out of memory while reading the " + what + " file");
+  }
+  if (!doc.IsDefined() || doc.IsNull()) ctx.fail(document_start(), "", "the " + what + " is empty (" + empty + ")");
+  return doc;
+}
 
 /// Applies `overrides` to `doc` in order (cli/core/io/scene_override.hpp); throws SceneError at the
 /// override's origin when its key or value is not usable.
@@ -289,5 +313,10 @@ class Map {
 };
 
 inline Map Value::map() const { return Map(*ctx_, node_, path_, mark_); }
+
+/// The root mapping of a loaded document.
+inline Map document_root(const Context& ctx, const YAML::Node& doc) {
+  return Map(ctx, doc, "", doc.Mark().is_null() ? document_start() : doc.Mark());
+}
 
 }  // namespace fp::yaml_document
