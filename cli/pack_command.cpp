@@ -40,7 +40,7 @@ struct InputError : std::runtime_error {
 /// Applies -o/--format to the scene and checks every file the run will write (outputs,
 /// their side files, the record) before any work is done, so a bad path costs nothing and
 /// creates nothing, and no output replaces another or an input.
-void apply_overrides(Scene& scene, const PackCommandOptions& o) {
+void apply_output_options(Scene& scene, const PackCommandOptions& o) {
   if (!o.format.empty() && o.output_path.empty()) throw InputError("--format needs -o PATH");
   if (!o.output_path.empty()) {
     OutputSpec out;
@@ -141,7 +141,7 @@ int run_pack_command(const PackCommandOptions& o) {
     } else {
       scene = load_scene(o.scene_path, o.scene_overrides);
     }
-    apply_overrides(scene, o);
+    apply_output_options(scene, o);
     // --seed, -j; every shape-specific input problem (family, parameters, output formats) and
     // what the run asks of the machine, before any work.
     prepare_scene(scene, o.seed, o.threads);

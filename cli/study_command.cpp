@@ -17,7 +17,6 @@
 #include "cli/failure_report.hpp"
 #include "cli/pack_api.hpp"
 #include "core/io/atomic_file.hpp"
-#include "core/io/document_file.hpp"
 #include "core/io/scene_yaml.hpp"
 
 #ifndef FRONTPACK_STUDY_PLOT_SCRIPT
@@ -46,8 +45,10 @@ std::string last_line(const std::string& path) {
 }
 
 /// Reads every run's scene with its changes and checks it as `pack` would (once per combination
-/// of the parameters: the seeds share it); marks the runs of shapes.
-void check_runs(const StudySpec& spec, std::vector<StudyRun>& runs) {
+/// of the parameters: the seeds share it); marks the runs of shapes. Returns the text of each
+/// base scene (a kept run's record must have it).
+std::map<std::string, std::string> check_runs(const StudySpec& spec, std::vector<StudyRun>& runs) {
+  std::map<std::string, std::string> base_texts;
   std::map<std::vector<std::size_t>, bool> checked;  // levels -> shapes
   for (StudyRun& run : runs) {
     if (auto it = checked.find(run.levels); it != checked.end()) {
@@ -58,6 +59,7 @@ void check_runs(const StudySpec& spec, std::vector<StudyRun>& runs) {
       Scene scene = load_scene(run.scene_path, run.overrides);
       prepare_scene(scene, run.seed, spec.threads);
       run.shapes = !scene.particle_templates.empty();
+      base_texts[run.scene_path] = scene.source_text;
     } catch (const SceneError& e) {
       throw SceneError(e.file(), e.line(), e.column(), e.key(), e.message() + " (study " + spec.path + ", run " + run.name + ")");
     } catch (const std::exception& e) {
@@ -65,6 +67,7 @@ void check_runs(const StudySpec& spec, std::vector<StudyRun>& runs) {
     }
     checked[run.levels] = run.shapes;
   }
+  return base_texts;
 }
 
 /// What the plot script needs besides the CSV: the parameters (their values in order, numeric
@@ -137,20 +140,17 @@ std::string summary_of(const StudyRow& row) {
 
 StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o) {
   std::vector<StudyRun> runs = study_runs(spec);
-  check_runs(spec, runs);
-  std::map<std::string, std::string> base_texts;  // per base scene: a done run's record must have its text
-  for (const StudyRun& run : runs)
-    if (!base_texts.count(run.scene_path))
-      base_texts[run.scene_path] = read_document_file(run.scene_path, "scene", "scenes/demo.yaml", kMaxSceneBytes);
+  const std::map<std::string, std::string> base_texts = check_runs(spec, runs);
 
   StudyOutcome out;
   out.runs = runs.size();
   out.csv_path = (fs::path(spec.output_dir) / "results.csv").string();
   out.rows.resize(runs.size());
   std::size_t ended = 0;
-  const auto finish = [&](std::size_t i, const std::string& status, const std::string& message, const std::string& record) {
-    out.rows[i] = study_row(spec, runs[i], status, message, record);
+  const auto finish = [&](std::size_t i, const std::string& record, const std::string& failure) {
+    out.rows[i] = study_row(spec, runs[i], record, failure);
     ++ended;
+    const std::string status = study_value(out.rows[i], "status");
     if (status == "invalid") ++out.invalid;
     if (status == "failed") ++out.failed;
     if (o.on_run) o.on_run(runs[i], out.rows[i], ended, runs.size());
@@ -159,14 +159,9 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o) {
       std::fflush(stdout);
     }
   };
-  const auto status_of = [](const std::string& record) {
-    const auto j = nlohmann::json::parse(record);
-    return j.value("info", nlohmann::json::object()).value("validation", std::string()) == "ok" ? "ok" : "invalid";
-  };
-
   if (o.list_only) {
     for (const StudyRun& run : runs) {
-      const bool done = study_run_done(spec, run, base_texts.at(run.scene_path));
+      const bool done = study_run_record(spec, run, base_texts.at(run.scene_path)).has_value();
       out.kept += done;
       std::printf("%s  %s\n", done ? "kept  " : "to run", run.name.c_str());
     }
@@ -175,10 +170,9 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o) {
   fs::create_directories(fs::path(spec.output_dir) / "runs");
   std::deque<std::size_t> waiting;
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    if (study_run_done(spec, runs[i], base_texts.at(runs[i].scene_path))) {
-      const std::string record = read_text(study_run_files(spec, runs[i]).record);
+    if (const auto record = study_run_record(spec, runs[i], base_texts.at(runs[i].scene_path))) {
       ++out.kept;
-      finish(i, status_of(record), "", record);
+      finish(i, *record, "");
     } else {
       waiting.push_back(i);
     }
@@ -216,10 +210,9 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o) {
       std::error_code ec;
       if ((code == 0 || code == 3) && fs::is_regular_file(files.record, ec)) {
         if (!spec.keep_packings) fs::remove(files.packing, ec);
-        const std::string record = read_text(files.record);
-        finish(i, status_of(record), "", record);
+        finish(i, read_text(files.record), "");
       } else {
-        finish(i, "failed", "exit " + std::to_string(code) + ": " + last_line(files.log), "");
+        finish(i, "", "exit " + std::to_string(code) + ": " + last_line(files.log));
       }
       write_text_file_atomically(out.csv_path, study_csv(out.rows));
       it = running.erase(it);

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -64,21 +65,23 @@ StudyRunFiles study_run_files(const StudySpec& spec, const StudyRun& run) {
           (folder / "log.txt").string()};
 }
 
-bool study_run_done(const StudySpec& spec, const StudyRun& run, const std::string& base_scene_text) {
+std::optional<std::string> study_run_record(const StudySpec& spec, const StudyRun& run, const std::string& base_scene_text) {
   const StudyRunFiles files = study_run_files(spec, run);
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(files.record, ec)) return false;
-  if (spec.keep_packings && !std::filesystem::is_regular_file(files.packing, ec)) return false;
+  if (!std::filesystem::is_regular_file(files.record, ec)) return std::nullopt;
+  if (spec.keep_packings && !std::filesystem::is_regular_file(files.packing, ec)) return std::nullopt;
   std::ifstream in(files.record, std::ios::binary);
-  const nlohmann::json record = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-  if (!record.is_object() || !record.contains("scene") || !record.contains("seed")) return false;
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const nlohmann::json record = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (!record.is_object() || !record.contains("scene") || !record.contains("seed")) return std::nullopt;
   const nlohmann::json& scene = record["scene"];
   std::vector<std::string> changes;
   for (const auto& o : run.overrides) changes.push_back(o.key + "=" + o.value);
   const nlohmann::json recorded = scene.value("overrides", nlohmann::json::array());
-  return scene.value("path", std::string()) == run.scene_path && scene.value("text", std::string()) == base_scene_text &&
-         recorded == nlohmann::json(changes) &&
-         record["seed"] == nlohmann::json(run.seed);
+  const bool this_run = scene.value("path", std::string()) == run.scene_path && scene.value("text", std::string()) == base_scene_text &&
+                        recorded == nlohmann::json(changes) && record["seed"] == nlohmann::json(run.seed);
+  if (!this_run) return std::nullopt;
+  return text;
 }
 
 }  // namespace fp

@@ -4,6 +4,7 @@
 // a run's folder already holds its result (a study resumes: done runs are kept).
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,8 +32,9 @@ struct StudyRunFiles {
 };
 StudyRunFiles study_run_files(const StudySpec& spec, const StudyRun& run);
 
-/// Whether the run's record is there and is the record of this run: the same base scene (path
-/// and text), the same changes, the same seed (and its packing is there when the study keeps packings).
-bool study_run_done(const StudySpec& spec, const StudyRun& run, const std::string& base_scene_text);
+/// The text of the run's record when it is there and is the record of this run: the same base
+/// scene (path and text), the same changes, the same seed (and its packing is there when the
+/// study keeps packings); nothing otherwise (the run is to be made).
+std::optional<std::string> study_run_record(const StudySpec& spec, const StudyRun& run, const std::string& base_scene_text);
 
 }  // namespace fp

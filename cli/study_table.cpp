@@ -35,16 +35,22 @@ std::string csv_field(const std::string& s) {
 
 }  // namespace
 
-StudyRow study_row(const StudySpec& spec, const StudyRun& run, const std::string& status, const std::string& message,
-                   const std::string& record_text) {
+StudyRow study_row(const StudySpec& spec, const StudyRun& run, const std::string& record_text, const std::string& failure) {
   StudyRow row;
   add(row, "run", run.name);
   for (std::size_t p = 0; p < spec.parameters.size(); ++p)
     add(row, spec.parameters[p].name, spec.parameters[p].levels[run.levels[p]].label);
   add(row, "seed", std::to_string(run.seed));
-  add(row, "status", status);
-  add(row, "message", message);
-  if (!record_text.empty()) flatten(Json::parse(record_text), "", row);
+  if (record_text.empty()) {
+    add(row, "status", "failed");
+    add(row, "message", failure);
+    return row;
+  }
+  const Json record = Json::parse(record_text);
+  const Json info = record.value("info", Json::object());
+  add(row, "status", info.value("validation", std::string()) == "ok" ? "ok" : "invalid");
+  add(row, "message", "");
+  flatten(record, "", row);
   return row;
 }
 

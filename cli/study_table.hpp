@@ -16,10 +16,9 @@ struct StudyRow {
   std::map<std::string, std::string> values;     ///< CSV text of each key
 };
 
-/// The row of a run: its identity, `status` (ok | invalid | failed), `message` (why it failed),
-/// and, when `record_text` is not empty, the record's scalars.
-StudyRow study_row(const StudySpec& spec, const StudyRun& run, const std::string& status, const std::string& message,
-                   const std::string& record_text);
+/// The row of a run: its identity, `status` — ok or invalid (the record's validation) when
+/// `record_text` is given, else failed — `message` (why it failed: `failure`), and the record's scalars.
+StudyRow study_row(const StudySpec& spec, const StudyRun& run, const std::string& record_text, const std::string& failure = "");
 
 /// The CSV of `rows` (those of runs not ended yet, without keys, are left out): the columns are
 /// the union of their keys, in order of first appearance; a value a run does not have is empty.

@@ -106,7 +106,10 @@ std::vector<SceneOverride> overrides_from(const py::object& changes) {
   for (const auto& [key, value] : changes.cast<py::dict>()) {
     const std::string k = py::str(key).cast<std::string>();
     const std::string v = py::isinstance<py::str>(value) ? value.cast<std::string>() : json_dumps(py::reinterpret_borrow<py::object>(value), false);
-    SceneOverride o = scene_override_argument(k + "=" + v);  // checks the key's form
+    if (!is_scene_key(k)) throw SceneError("set[" + k + "]", 0, 0, k, std::string("not a scene key (") + kSceneKeyForm + ")");
+    SceneOverride o;
+    o.key = k;
+    o.value = v;
     o.origin.file = "set[" + k + "]";
     out.push_back(std::move(o));
   }

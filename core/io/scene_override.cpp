@@ -41,6 +41,8 @@ std::vector<KeyStep> key_steps(const std::string& key) {
 
 }  // namespace
 
+bool is_scene_key(const std::string& key) { return !key_steps(key).empty(); }
+
 SceneOverride scene_override_argument(const std::string& arg) {
   const std::size_t eq = arg.find('=');
   if (eq == std::string::npos)
@@ -48,9 +50,7 @@ SceneOverride scene_override_argument(const std::string& arg) {
   SceneOverride o;
   o.key = arg.substr(0, eq);
   o.value = arg.substr(eq + 1);
-  if (key_steps(o.key).empty())
-    throw std::invalid_argument("--set " + arg + ": '" + o.key +
-                                "' is not a scene key (dotted names with list indices, e.g. container.max or particles[0].aspect_ratio)");
+  if (!is_scene_key(o.key)) throw std::invalid_argument("--set " + arg + ": '" + o.key + "' is not a scene key (" + kSceneKeyForm + ")");
   o.origin.file = "--set " + arg;
   return o;
 }
@@ -74,7 +74,7 @@ void apply_overrides(YAML::Node& doc, const std::vector<SceneOverride>& override
       throw SceneError(o.origin.file, o.origin.line, o.origin.column, o.key, message);
     };
     const std::vector<KeyStep> steps = key_steps(o.key);
-    if (steps.empty()) fail("not a scene key (dotted names with list indices, e.g. container.max or particles[0].aspect_ratio)");
+    if (steps.empty()) fail(std::string("not a scene key (") + kSceneKeyForm + ")");
     YAML::Node value;
     try {
       value = YAML::Load(o.value);

@@ -15,6 +15,13 @@ struct SceneOverride {
   SourceSpot origin;  ///< where it was given; file "--set KEY=VALUE" on the command line
 };
 
+/// What a dotted key looks like, for messages about one that does not.
+inline constexpr const char* kSceneKeyForm =
+    "dotted names with list indices, e.g. container.max or particles[0].aspect_ratio";
+
+/// Whether `key` has that form (whether the scene has it is known only when it is read).
+bool is_scene_key(const std::string& key);
+
 /// "KEY=VALUE" of `--set`. Throws std::invalid_argument naming the argument (no '=', an empty or
 /// malformed key; the value is checked when the scene is read).
 SceneOverride scene_override_argument(const std::string& key_equals_value);

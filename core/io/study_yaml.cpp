@@ -3,7 +3,6 @@
 #include <charconv>
 #include <filesystem>
 #include <set>
-#include <thread>
 
 #include "core/io/document_file.hpp"
 #include "core/io/scene_yaml.hpp"
@@ -42,11 +41,8 @@ SceneOverride override_at(const Value& v, const std::string& key) {
 
 /// `key`, given at `where`, checked as --set checks a key.
 std::string scene_key(const Value& where, const std::string& key) {
-  try {
-    return scene_override_argument(key + "=x").key;
-  } catch (const std::invalid_argument&) {
-    where.fail("'" + key + "' is not a scene key (dotted names with list indices, e.g. container.max or particles[0].aspect_ratio)");
-  }
+  if (!is_scene_key(key)) where.fail("'" + key + "' is not a scene key (" + kSceneKeyForm + ")");
+  return key;
 }
 
 /// A file named in the study, relative to its folder.
