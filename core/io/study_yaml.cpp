@@ -51,6 +51,12 @@ std::string study_relative(const Context& ctx, const std::string& p) {
   return (f.is_absolute() ? f : ctx.folder / f).lexically_normal().string();
 }
 
+/// One change a value makes: `scene` names another base scene, any other key is a --set.
+void add_change(StudyLevel& level, const Context& ctx, const std::string& key, const Value& value) {
+  if (key == "scene") level.scene_path = study_relative(ctx, value.string());
+  else level.overrides.push_back(override_at(value, scene_key(value, key)));
+}
+
 StudyParameter parse_parameter(const Value& v, const Context& ctx) {
   const Map m = v.map();
   m.check_known({"key", "values", "name", "cases"});
@@ -64,15 +70,7 @@ StudyParameter parse_parameter(const Value& v, const Context& ctx) {
       StudyLevel level;
       level.label = label;
       const Map changes = cases.get(label).map();
-      for (const std::string& key : changes.keys()) {
-        const Value change = *changes.find(key);
-        if (key == "scene") {
-          level.scene_path = study_relative(ctx, change.string());
-          continue;
-        }
-        scene_key(change, key);
-        level.overrides.push_back(override_at(change, key));
-      }
+      for (const std::string& key : changes.keys()) add_change(level, ctx, key, *changes.find(key));
       if (level.overrides.empty() && level.scene_path.empty()) cases.get(label).fail("a case changes at least one key");
       p.levels.push_back(std::move(level));
     }
@@ -86,13 +84,8 @@ StudyParameter parse_parameter(const Value& v, const Context& ctx) {
     for (const Value& x : values) {
       if (!x.node().IsDefined() || x.node().IsNull()) x.fail("a value is missing");
       StudyLevel level;
-      if (key == "scene") {
-        level.label = x.string();
-        level.scene_path = study_relative(ctx, level.label);
-      } else {
-        level.overrides.push_back(override_at(x, key));
-        level.label = level.overrides.back().value;
-      }
+      level.label = flow_text(x.node());
+      add_change(level, ctx, key, x);
       p.levels.push_back(std::move(level));
     }
   }
@@ -119,9 +112,8 @@ StudySpec parse_study(const std::string& text, const std::string& source_name) {
   s.text = text;
   const Map root = document_root(ctx, doc);
   root.check_known({"scene", "seeds", "parameters", "jobs", "threads", "output", "packings", "plots"});
-  const auto resolve = [&](const std::string& p) { return study_relative(ctx, p); };
   const Value scene = root.get("scene", "the base scene file, relative to the study file's folder");
-  s.scene_path = resolve(scene.string());
+  s.scene_path = study_relative(ctx, scene.string());
   if (auto v = root.find("seeds")) {
     s.seeds.clear();
     if (v->node().IsScalar()) {
@@ -157,8 +149,8 @@ StudySpec parse_study(const std::string& text, const std::string& source_name) {
     if (j < 1 || j > 1024) v->fail("must be 1 .. 1024 (runs at once)");
     s.jobs = static_cast<int>(j);
   }
-  if (auto v = root.find("output")) s.output_dir = resolve(v->string());
-  else s.output_dir = resolve(std::filesystem::path(source_name).filename().replace_extension(".out").string());
+  if (auto v = root.find("output")) s.output_dir = study_relative(ctx, v->string());
+  else s.output_dir = study_relative(ctx, std::filesystem::path(source_name).filename().replace_extension(".out").string());
   if (auto v = root.find("packings")) s.keep_packings = v->boolean();
   if (auto v = root.find("plots")) {
     for (const Value& x : v->list()) {
