@@ -99,6 +99,9 @@ std::string json_dumps(const py::object& o, bool lines = true) {
   return (lines ? dumps(o, py::arg("indent") = 1) : dumps(o)).cast<std::string>();
 }
 
+/// A path given as str or os.PathLike.
+std::string path_of(const py::object& o) { return py::module_::import("os").attr("fspath")(o).cast<std::string>(); }
+
 /// `set={"packer.front": "fifo", ...}` as --set changes (values as JSON, a subset of YAML).
 std::vector<SceneOverride> overrides_from(const py::object& changes) {
   std::vector<SceneOverride> out;
@@ -106,11 +109,11 @@ std::vector<SceneOverride> overrides_from(const py::object& changes) {
   for (const auto& [key, value] : changes.cast<py::dict>()) {
     const std::string k = py::str(key).cast<std::string>();
     const std::string v = py::isinstance<py::str>(value) ? value.cast<std::string>() : json_dumps(py::reinterpret_borrow<py::object>(value), false);
-    if (!is_scene_key(k)) throw SceneError("set[" + k + "]", 0, 0, k, std::string("not a scene key (") + kSceneKeyForm + ")");
     SceneOverride o;
     o.key = k;
     o.value = v;
     o.origin.file = "set[" + k + "]";
+    if (!is_scene_key(k)) throw SceneError(o.origin.file, 0, 0, k, std::string("not a scene key (") + kSceneKeyForm + ")");
     out.push_back(std::move(o));
   }
   return out;
@@ -120,8 +123,7 @@ std::vector<SceneOverride> overrides_from(const py::object& changes) {
 /// file's schema (given to the parser as JSON, a subset of YAML; messages name its dotted keys).
 Scene scene_from(const py::object& source, const std::vector<SceneOverride>& changes = {}) {
   if (py::isinstance<py::dict>(source)) return parse_scene(json_dumps(source), "<dict>", changes);
-  const std::string path = py::module_::import("os").attr("fspath")(source).cast<std::string>();
-  return load_scene(path, changes);
+  return load_scene(path_of(source), changes);
 }
 
 std::shared_ptr<PyPacking> pack(const py::object& source, std::optional<std::uint64_t> seed, std::optional<int> threads,
@@ -193,11 +195,10 @@ py::dict study(const py::object& source, int jobs, bool plots, const py::object&
   if (py::isinstance<py::dict>(source)) {
     spec = parse_study(json_dumps(source), "<dict>");
   } else {
-    spec = load_study(py::module_::import("os").attr("fspath")(source).cast<std::string>());
+    spec = load_study(path_of(source));
   }
   StudyOptions o;
-  o.executable = executable.is_none() ? std::string(FRONTPACK_EXECUTABLE)
-                                      : py::module_::import("os").attr("fspath")(executable).cast<std::string>();
+  o.executable = executable.is_none() ? std::string(FRONTPACK_EXECUTABLE) : path_of(executable);
   if (access(o.executable.c_str(), X_OK) != 0)
     throw std::runtime_error("the frontpack command " + o.executable + " is not there (build it, or give executable=)");
   o.jobs = jobs;
