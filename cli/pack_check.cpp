@@ -1,6 +1,7 @@
 #include "cli/pack_check.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "core/io/analysis_json.hpp"
@@ -62,6 +63,16 @@ PackCheck pack_check_of(const PackingAnalysis& a) {
   for (std::size_t k = 0; k < a.reference_center.size() && k < 3; ++k)
     c.metrics.emplace_back(std::string("reference_sphere_center_") + axis_names[k], a.reference_center[k]);
   if (a.orientation) c.metrics.emplace_back("orientation_order", a.orientation_order);
+  // The smallest p of the orientation tests, and the order about the law's axis, per template.
+  for (std::size_t t = 0; t < c.validation.orientations.size(); ++t) {
+    const OrientationFit& f = c.validation.orientations[t];
+    if (!f.computed()) continue;
+    const std::string suffix = c.validation.orientations.size() > 1 ? "_" + std::to_string(t) : "";
+    double p = 1.0;
+    for (const OrientationFit::Test& test : f.tests) p = std::min(p, test.p);
+    c.metrics.emplace_back("orientation_pvalue" + suffix, p);
+    if (std::isfinite(f.order)) c.metrics.emplace_back("orientation_axis_order" + suffix, f.order);
+  }
   c.counters = {{"rattlers", cs.rattlers}};
   c.info = {{"radii_test", c.validation.radii().test}};
   c.analysis_json = analysis_json(a);

@@ -10,7 +10,7 @@ namespace fp {
 
 std::vector<RequestedTemplate> requested_templates(const Scene& scene) {
   std::vector<RequestedTemplate> requested;  // template ids follow the scene's list
-  for (const ParticleTemplateSpec& t : scene.particle_templates) requested.push_back({t.size.get(), t.fraction});
+  for (const ParticleTemplateSpec& t : scene.particle_templates) requested.push_back({t.size.get(), t.fraction, &t.orientation});
   return requested;
 }
 
@@ -64,7 +64,19 @@ template <int D>
 ValidationReport validate_shapes(const ShapePacking<D>& packing, const Container<D>& container, double tolerance,
                                  const std::vector<RequestedTemplate>& requested, double sizes_alpha,
                                  ContactNetwork<D>* network) {
-  return validate_particles<D>(ShapeParticles<D>(packing, container), tolerance, requested, sizes_alpha, network);
+  ValidationReport rep = validate_particles<D>(ShapeParticles<D>(packing, container), tolerance, requested, sizes_alpha, network);
+  // The orientations of each template against its law (validate_particles has no rotations).
+  std::vector<std::vector<Mat<D>>> rotations(requested.size());
+  for (const Particle<D>& p : packing.particles) {
+    const auto t = static_cast<std::size_t>(p.template_id);
+    if (t < requested.size() && requested[t].orientation && p.pose.rotation.allFinite()) rotations[t].push_back(p.pose.rotation);
+  }
+  rep.orientations.resize(requested.size());
+  for (std::size_t t = 0; t < requested.size(); ++t)
+    if (requested[t].orientation && !rotations[t].empty())
+      rep.orientations[t] = orientation_fit<D>(rotations[t], requested[t].orientation->template law<D>());
+  rep.ok = rep.ok && rep.orientations_ok();
+  return rep;
 }
 
 template ValidationReport validate_shapes<2>(const ShapePacking<2>&, const Container<2>&, double,

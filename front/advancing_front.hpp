@@ -394,7 +394,7 @@ class AdvancingFront {
     // The largest draft tried sets V (a superset of every smaller draft's V).
     gather_neighbours(s0, radius(pool_[order_[0]]), res);
     std::size_t larger = order_.size();  // order_[0, larger) are tried largest first
-    Vec<D> at_smallest;
+    Found at_smallest;
     if (probe_smallest_ && order_.size() >= 2) {
       const Draft& d = pool_[order_.back()];
       if (!find_position(d, s0, res, at_smallest)) {
@@ -409,7 +409,7 @@ class AdvancingFront {
       failed = std::min(failed, radius(pool_[k]));
     }
     if (larger == order_.size()) return false;
-    add_particle(take_from_pool(static_cast<std::size_t>(order_.back()), res), at_smallest);
+    add_particle(take_from_pool(static_cast<std::size_t>(order_.back()), res), at_smallest.position);
     return true;
   }
 
@@ -446,23 +446,122 @@ class AdvancingFront {
     model_.neighbours_ready(nb_);
   }
 
+  /// A position found for a draft: where, the bodies it touches besides s0 (indices into bodies_;
+  /// 2D: i == j), their rank (0: a wall among them) and its growth key.
+  struct Found {
+    Vec<D> position = Vec<D>::Zero();
+    int i = -1, j = -1;
+    int rank = 2;
+    double key = 0;
+  };
+
   /// Tries to place pool_[k] touching s0 and D-1 bodies of V; places it and returns true on success.
   bool place(std::size_t k, int s0, Result& res) {
-    Vec<D> best;
-    if (!find_position(pool_[k], s0, res, best)) return false;
-    add_particle(take_from_pool(k, res), best);
+    Found best;
+    if (!find_oriented_position(pool_[k], s0, res, best)) return false;
+    add_particle(take_from_pool(k, res), best.position);
     return true;
+  }
+
+  /// find_position, for a model whose drafts may turn (Model::kTurns, non-spherical particles):
+  /// over opt_.orientation_trials orientations drawn from the draft's law (the position kept by
+  /// the compactness rule over all of them), then the roll. What fits in a gap depends on the
+  /// orientation far more than on the position (experiments/shape-density). The draft keeps the
+  /// orientation of the position returned.
+  bool find_oriented_position(Draft& d, int s0, Result& res, Found& best) {
+    if constexpr (!Model::kTurns) {
+      return find_position(d, s0, res, best);
+    } else {
+      const int trials = model_.orientation_trials(d);
+      const bool keep_first = opt_.candidate == CandidateChoice::First;
+      bool found = false;
+      auto kept = model_.orientation(d);
+      for (int t = 0; t < trials && !(found && keep_first); ++t) {
+        if (t > 0) {
+          model_.redraw_orientation(d, rng_);
+          ++res.counters.orientation_draws;
+        }
+        Found f;
+        if (!find_position(d, s0, res, f)) continue;
+        if (found && (f.rank > best.rank || (f.rank == best.rank && f.key >= best.key))) continue;
+        best = f;
+        kept = model_.orientation(d);
+        found = true;
+      }
+      model_.set_orientation(d, kept);
+      if (found && !keep_first && opt_.roll_steps > 0 && model_.may_roll(d)) roll(d, s0, best, res);
+      return found;
+    }
+  }
+
+  /// The roll (non-spherical particles): the draft just positioned turns by small random
+  /// rotations within its law (model_.turn: about any axis for an isotropic law, about its own
+  /// axis for a law about an axis) while touching s0 and the same bodies: their contact problem is
+  /// solved again at each orientation and the solution nearest to the last kept one followed. A
+  /// turn that brings it closer to the seed point and passes the scan's checks is kept: the
+  /// particle rolls or slides into the pocket its bodies form, until a fourth body stops it. The
+  /// overlap allowance is a tenth of the scan's (a roll pushes against that fourth body: with the
+  /// scan's it ends inside it by the whole tolerance). The angle grows after a kept turn and
+  /// shrinks after a refused one; the roll ends after roll_steps turns or below kMinRollAngle.
+  void roll(Draft& d, int s0, Found& best, Result& res) {
+    (void)s0;
+    auto kept = model_.orientation(d);
+    double angle = kRollAngle;
+    std::array<Placement<D>, Model::kMaxPlacements> out;
+    model_.begin_roll();
+    for (int t = 0; t < opt_.roll_steps && angle >= kMinRollAngle; ++t) {
+      ++res.counters.roll_turns;
+      ++res.counters.solves;
+      model_.turn(d, angle, rng_);
+      model_.orient(d);
+      const int m = model_.solve(best.i, best.j, std::span<Placement<D>>(out.data(), out.size()));
+      int q = -1;
+      for (int c = 0; c < m; ++c)
+        if (q < 0 || (out[c].position - best.position).squaredNorm() < (out[q].position - best.position).squaredNorm()) q = c;
+      const bool closer = q >= 0 && growth_key(out[q].position) < best.key;
+      if (closer && !off_face(d, out[q].position, best.i, best.j, best.rank) &&
+          rejection(d, out[q].position, best.rank, kRollAllowance) == Rejection::None) {
+        best.position = out[q].position;
+        best.key = growth_key(best.position);
+        kept = model_.orientation(d);
+        angle = std::min(kMaxRollAngle, 1.5 * angle);
+        ++res.counters.roll_kept;
+      } else {
+        model_.set_orientation(d, kept);
+        angle *= 0.7;
+      }
+    }
+    model_.set_orientation(d, kept);
+    model_.orient(d);
+  }
+
+  /// A position x of the draft solved against bodies i and j of rank 0 (a wall among them) that
+  /// lies beyond a wall's face: a mesh facet or polygon edge is solved as its whole plane (line),
+  /// and a position tangent to it beyond the face touches no wall there.
+  bool off_face(const Draft& d, const Vec<D>& x, int i, int j, int rank) const {
+    return rank == 0 && !(model_.over_face(i, d, x) && model_.over_face(j, d, x));
+  }
+
+  /// Why a candidate position x of the draft, touching s0 and bodies of the given rank, cannot be
+  /// kept (None: it can): outside the block, overlapping a particle of V beyond `allowance` x the
+  /// tolerance, outside the container, or not touching the wall it was solved against.
+  enum class Rejection { None, Block, Overlap, Container };
+  Rejection rejection(const Draft& d, const Vec<D>& x, int rank, double allowance = 1.0) {
+    if (!in_block(x)) return Rejection::Block;
+    if (model_.overlaps_neighbour(d, x, allowance)) return Rejection::Overlap;
+    if (!model_.inside(d, x)) return Rejection::Container;
+    if (rank == 0 && !model_.touches_boundary(d, x)) return Rejection::Container;
+    return Rejection::None;
   }
 
   /// Step 2.2 for one draft: a position touching s0 and D-1 bodies of V, overlapping nothing,
   /// inside the container (the one kept by opt_.candidate). False if there is none.
-  bool find_position(const Draft& d, int s0, Result& res, Vec<D>& best) {
+  bool find_position(const Draft& d, int s0, Result& res, Found& best) {
     const double r = radius(d);
     const Vec<D> c0 = model_.position(s0);
     const double r0 = model_.radius(s0);
     const bool keep_first = opt_.candidate == CandidateChoice::First;
     bool found = false;
-    double best_key = 0;
     // Every candidate lies within r0 + r of c0: a lower bound for its growth key.
     const double lower_bound = growth_key_bound(c0, r0 + r);
 
@@ -474,26 +573,25 @@ class AdvancingFront {
     // not: the layer against the wall is laid first, instead of being approached by particles
     // nestled closer to the seed that leave sub-particle gaps at the wall (measured in
     // experiments/front-levers: ~7x more wall contacts and a denser boundary layer).
-    int best_rank = 2;
     bool any_position = false;  // some pair had a solution (valid or not)
-    // A candidate x touching s0 and bodies of the given rank (0: a wall among them): returns
-    // true to end the scan.
-    auto test = [&](const Vec<D>& x, int rank) -> bool {
+    // A candidate x touching s0 and bodies i and j of the given rank (0: a wall among them):
+    // returns true to end the scan.
+    auto test = [&](const Vec<D>& x, int i, int j, int rank) -> bool {
       ++res.counters.candidates;
       double key = 0;
       if (!keep_first) {
         key = growth_key(x);
-        if (found && (rank > best_rank || (rank == best_rank && key >= best_key))) return false;
+        if (found && (rank > best.rank || (rank == best.rank && key >= best.key))) return false;
       }
-      if (!in_block(x)) { ++res.counters.rejected_block; return false; }
-      if (model_.overlaps_neighbour(d, x)) { ++res.counters.rejected_overlap; return false; }
-      if (!model_.inside(d, x)) { ++res.counters.rejected_container; return false; }
-      if (rank == 0 && !model_.touches_boundary(d, x)) { ++res.counters.rejected_container; return false; }
+      switch (rejection(d, x, rank)) {
+        case Rejection::None: break;
+        case Rejection::Block: ++res.counters.rejected_block; return false;
+        case Rejection::Overlap: ++res.counters.rejected_overlap; return false;
+        case Rejection::Container: ++res.counters.rejected_container; return false;
+      }
       found = true;
-      best = x;
-      best_key = key;
-      best_rank = rank;
-      return keep_first || (rank == 0 && best_key <= lower_bound);
+      best = Found{x, i, j, rank, key};
+      return keep_first || (rank == 0 && key <= lower_bound);
     };
     auto consider = [&](int i, int j) -> bool {  // returns true to end the scan
       ++res.counters.solves;
@@ -501,13 +599,11 @@ class AdvancingFront {
       const int rank = (bodies_[i].is_wall() || bodies_[j].is_wall()) ? 0 : 1;
       any_position |= m > 0;
       for (int q = 0; q < m; ++q) {
-        // A mesh facet or polygon edge is solved as its whole plane (line): a position tangent to
-        // it beyond the face touches no wall there, and is dropped before any costlier test.
-        if (rank == 0 && !(model_.over_face(i, d, out[q].position) && model_.over_face(j, d, out[q].position))) {
+        if (off_face(d, out[q].position, i, j, rank)) {
           ++res.counters.rejected_off_face;
           continue;
         }
-        if (test(out[q].position, rank)) return true;
+        if (test(out[q].position, i, j, rank)) return true;
       }
       return false;
     };
@@ -535,7 +631,7 @@ class AdvancingFront {
             two_contact_.clear();
             model_.two_contact(s0, b, d, two_contact_);
             for (const Vec<D>& x : two_contact_)
-              if (test(x, bodies_[b].is_wall() ? 0 : 1)) break;
+              if (test(x, b, b, bodies_[b].is_wall() ? 0 : 1)) break;
           }
           if (found) ++res.counters.two_contact_placements;
         }
@@ -545,6 +641,9 @@ class AdvancingFront {
   }
 
   static constexpr std::size_t kMaxContactBodies = 64;  // particle bodies per pair scan (gather_neighbours)
+  // The roll's turn angles (radians): the first, the largest and the smallest tried.
+  static constexpr double kRollAngle = 0.3, kMaxRollAngle = 1.0, kMinRollAngle = 1e-3;
+  static constexpr double kRollAllowance = 0.1;  // the roll's overlap allowance, in the scan's
 
   const Container<D>& container_;
   PackerOptions opt_;

@@ -18,7 +18,7 @@ struct FrontCounters {
   std::uint64_t front_removals = 0;       ///< s0 removed from F (step 2.3)
   std::uint64_t pairs_considered = 0;     ///< (si, sj) pairs enumerated
   std::uint64_t pairs_pruned = 0;         ///< pairs too far apart to touch one new particle
-  std::uint64_t solves = 0;               ///< contact-solver calls
+  std::uint64_t solves = 0;               ///< contact-solver calls (the roll's too)
   std::uint64_t candidates = 0;           ///< positions returned by the solver
   std::uint64_t rejected_container = 0;   ///< candidates not inside the container
   std::uint64_t rejected_overlap = 0;     ///< candidates overlapping a neighbour
@@ -34,6 +34,9 @@ struct FrontCounters {
   std::uint64_t contact_bodies_capped = 0;   ///< pair scans limited to the nearest contact bodies (a V of thousands)
   std::uint64_t blocks = 0;               ///< threads: blocks the container was cut into (0: one front)
   std::uint64_t trimmed = 0;              ///< threads: particles placed, then dropped to honour a count or fraction stop
+  std::uint64_t orientation_draws = 0;    ///< shapes: orientations drawn beyond the first (orientation_trials)
+  std::uint64_t roll_turns = 0;           ///< shapes: turns the roll tried
+  std::uint64_t roll_kept = 0;            ///< shapes: turns the roll kept
 
   /// Every counter with its name in the run record, in the record's order (adding, sending and
   /// listing them all alike).
@@ -61,7 +64,10 @@ struct FrontCounters {
       {"two_contact_placements", &FrontCounters::two_contact_placements},
       {"contact_bodies_capped", &FrontCounters::contact_bodies_capped},
       {"blocks", &FrontCounters::blocks},
-      {"trimmed", &FrontCounters::trimmed}};
+      {"trimmed", &FrontCounters::trimmed},
+      {"orientation_draws", &FrontCounters::orientation_draws},
+      {"roll_turns", &FrontCounters::roll_turns},
+      {"roll_kept", &FrontCounters::roll_kept}};
 
   /// The counters of two fronts run side by side (the blocks of front/block_front.hpp); the
   /// largest |V| is the larger one.

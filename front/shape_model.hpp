@@ -22,10 +22,12 @@
 #include "core/geometry/container.hpp"
 #include "core/geometry/neighbour_grid.hpp"
 #include "core/io/scene.hpp"
+#include "core/sampling/random_unit.hpp"
 #include "core/sampling/rng.hpp"
 #include "front/front_parts.hpp"
 #include "front/shape_front.hpp"
 #include "front/shape_template.hpp"
+#include "shapes/sphere_shape.hpp"
 
 namespace fp {
 
@@ -47,10 +49,13 @@ class ShapeModel {
   /// probe_smallest: auto is off: measured 1.5-2x faster but 1-4 % looser (2D polygons 0.727 ->
   /// 0.719, ellipses 0.746 -> 0.720, capsules 0.739 -> 0.709; capsules in the femur 0.487 -> 0.473).
   static constexpr bool kProbeSmallestByDefault = false;
+  /// Drafts have an orientation the front may choose within their law (orientation_trials, roll).
+  static constexpr bool kTurns = true;
 
   ShapeModel(const Container<D>& container, const Input& templates, const PackerOptions& options,
               const Aabb<D>& centres)
       : container_(container), templates_(check(templates)), tol_(options.minimisation.gap_tolerance),
+        orientation_trials_(options.orientation_trials),
         registry_(np_, options.minimisation, options.contact_solver == ContactSolverChoice::Auto),
         containment_(container, np_), r_min_(min_bounding(templates)), r_max_(r_max_of(templates)),
         grid_(grid_domain(centres, r_max_), r_min_, r_max_, options.grid_cell_factor, options.hierarchical_grid_ratio) {}
@@ -246,17 +251,56 @@ class ShapeModel {
   }
   void two_contact(int, int, const Draft&, std::vector<Vec<D>>&) const {}
 
-  /// Does the draft at x overlap a particle of V beyond the tolerance? The last blocker first.
-  bool overlaps_neighbour(const Draft&, const Vec<D>& x) {
+  // ---- the orientation of a draft (front/advancing_front.hpp: orientation trials and the roll) ----
+
+  /// Orientations tried per placement: the packer's orientation_trials; 1 for a fixed law, and
+  /// for a ball (every orientation of it is the same body).
+  int orientation_trials(const Draft& d) const {
+    return law_of(d).kind() == OrientationKind::Fixed || is_ball(d) ? 1 : orientation_trials_;
+  }
+  /// Whether the draft may turn after it is positioned without leaving its law: any turn keeps an
+  /// isotropic law isotropic in law, a turn about the body axis keeps a 3D law about an axis
+  /// (its spin is uniform); a fixed law and a 2D law about an axis allow none.
+  bool may_roll(const Draft& d) const {
+    const OrientationLaw<D>& law = law_of(d);
+    return !is_ball(d) && (law.kind() == OrientationKind::Isotropic || law.free_spin());
+  }
+  const Mat<D>& orientation(const Draft& d) const { return d.rotation; }
+  void set_orientation(Draft& d, const Mat<D>& r) const { d.rotation = r; }
+  void redraw_orientation(Draft& d, Rng& rng) const { d.rotation = law_of(d).draw(rng); }
+  /// Turns the draft by an angle uniform in [-angle, angle]: about a random axis (isotropic law),
+  /// about its own body axis (a law about an axis), in the plane (2D).
+  void turn(Draft& d, double angle, Rng& rng) const {
+    const double theta = angle * rng.uniform(-1.0, 1.0);
+    if constexpr (D == 2) {
+      d.rotation = rotation_about<2>(Vec2::Zero(), theta) * d.rotation;
+    } else {
+      const Vec3 axis = law_of(d).kind() == OrientationKind::Isotropic ? random_unit<3>(rng) : Vec3(d.rotation.col(0));
+      d.rotation = rotation_about<3>(axis, theta) * d.rotation;
+    }
+  }
+  /// The roll begins: its solves need no obstacles (the front checks V), and a solver that keeps
+  /// per-orientation work for them (the ball wrapper's loci of V) would redo it at every turn.
+  void begin_roll() { registry_.set_obstacles({}, tol_); }
+  /// The placement in progress (begin_placement) takes the draft's current orientation.
+  void orient(const Draft& d) {
+    mobile_ = Mobile<D>::of_shape(d.shape, d.rotation);
+    trial_.pose.rotation = d.rotation;
+    find_wall_feet(d, bodies_);
+  }
+
+  /// Does the draft at x overlap a particle of V beyond `allowance` x the tolerance? The last
+  /// blocker first.
+  bool overlaps_neighbour(const Draft&, const Vec<D>& x, double allowance = 1.0) {
     trial_.pose.position = x;
-    const double r = R_;
+    const double r = R_, tol = tol_ * allowance;
     const int n = static_cast<int>(nb_->size());
     auto blocks = [&](int q) {
       const Particle<D>& other = particle((*nb_)[static_cast<std::size_t>(q)].id);
       const double rk = other.bounding_radius();
       const double reach = r + rk;
       if ((other.pose.position - x).squaredNorm() >= reach * reach) return false;
-      return np_.overlap_beyond(other, trial_, tol_ * std::min(r, rk));
+      return np_.overlap_beyond(other, trial_, tol * std::min(r, rk));
     };
     if (last_blocker_ < n && blocks(last_blocker_)) return true;
     for (int q = 0; q < n; ++q)
@@ -326,6 +370,9 @@ class ShapeModel {
     }
   }
 
+  static bool is_ball(const Draft& d) { return d.shape->kind() == SphereShape<D>::kKind; }
+  const OrientationLaw<D>& law_of(const Draft& d) const { return templates_[static_cast<std::size_t>(d.template_id)].orientation_law; }
+
   static const Input& check(const Input& ts) {
     if (ts.empty()) throw std::invalid_argument("pack_shapes: no particle templates");
     return ts;
@@ -383,6 +430,7 @@ class ShapeModel {
   const Container<D>& container_;
   const Input& templates_;
   double tol_;
+  int orientation_trials_;
   NarrowPhase<D> np_;
   SolverRegistry<D> registry_;
   ShapeContainment<D> containment_;

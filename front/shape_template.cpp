@@ -17,6 +17,7 @@ std::vector<ShapeTemplate<D>> resolve_templates(const Scene& scene) {
     t.size = spec.size;
     t.scale_per_size = 1.0 / t.prototype.dimensions.at(spec.size_on);
     t.orientation = spec.orientation;
+    t.orientation_law = spec.orientation.law<D>();
     t.fraction = spec.fraction;
     out.push_back(std::move(t));
   }
@@ -49,19 +50,7 @@ Draft<D> draw_draft(const std::vector<ShapeTemplate<D>>& templates, Rng& rng) {
   const ShapeTemplate<D>& t = templates[static_cast<std::size_t>(d.template_id)];
   d.size = t.size->sample(rng);
   d.shape = t.prototype.shape->scaled(d.size * t.scale_per_size);
-  if (t.orientation.kind == OrientationSpec::Kind::Fixed) {
-    if constexpr (D == 2) d.rotation = rotation_2d(t.orientation.fixed.at(0) * kPi / 180.0);
-    else d.rotation = rotation_of<3>(Eigen::Vector4d(t.orientation.fixed.at(0), t.orientation.fixed.at(1),
-                                                     t.orientation.fixed.at(2), t.orientation.fixed.at(3)));
-  } else if constexpr (D == 2) {
-    d.rotation = rotation_2d(2 * kPi * rng.uniform01());
-  } else {
-    // Shoemake (1992): uniform on SO(3).
-    const double u1 = rng.uniform01(), u2 = rng.uniform01(), u3 = rng.uniform01();
-    const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
-    d.rotation = rotation_of<3>(Eigen::Vector4d(b * std::cos(2 * kPi * u3), a * std::sin(2 * kPi * u2),
-                                                a * std::cos(2 * kPi * u2), b * std::sin(2 * kPi * u3)));
-  }
+  d.rotation = t.orientation_law.draw(rng);
   return d;
 }
 

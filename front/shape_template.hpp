@@ -17,14 +17,16 @@ struct ShapeTemplate {
   ShapePrototype<D> prototype;
   RadiusDistributionPtr size;         ///< on the named dimension
   double scale_per_size = 1.0;        ///< prototype scale factor per unit of size (1 / dimension value)
-  OrientationSpec orientation;
+  OrientationSpec orientation;       ///< as written
+  OrientationLaw<D> orientation_law;  ///< how orientations are drawn
   double fraction = 1.0;
 
   double bounding_min() const { return size->r_min() * scale_per_size; }
   double bounding_max() const { return size->r_max() * scale_per_size; }
 };
 
-/// A drawn particle not yet placed: shape at its size and fixed orientation.
+/// A drawn particle not yet placed: shape at its size, and its orientation (drawn from the
+/// template's law; the front may turn it while placing it, within the law: front/advancing_front.hpp).
 template <int D>
 struct Draft {
   int template_id = 0;
@@ -43,8 +45,8 @@ std::vector<ShapeTemplate<D>> resolve_templates(const Scene& scene);
 template <int D>
 double mean_measure(const std::vector<ShapeTemplate<D>>& templates);
 
-/// Draws a template by fraction, a size from its distribution and an orientation (uniform random
-/// rotation: Shoemake's quaternion from three uniforms; 2D: a uniform angle). Deterministic in rng.
+/// Draws a template by fraction, a size from its distribution and an orientation from its law
+/// (core/sampling/orientation_law.hpp). Deterministic in rng.
 template <int D>
 Draft<D> draw_draft(const std::vector<ShapeTemplate<D>>& templates, Rng& rng);
 

@@ -36,6 +36,7 @@ class SphereModel {
   static constexpr double kVoidPoints = double(1 << 24);
   static constexpr std::uint64_t kClockEvery = 1024;   ///< picks between clock reads (a pick costs ~10 us)
   static constexpr bool kProbeSmallestByDefault = true;  ///< probe_smallest: auto (narrow ratios)
+  static constexpr bool kTurns = false;                  ///< a ball has no orientation to choose
 
   SphereModel(const Container<D>& container, const RadiusDistribution& radii, const PackerOptions& options,
               const Aabb<D>& centres)
@@ -225,13 +226,15 @@ class SphereModel {
     if constexpr (D == 3) two_contact_positions(position(s0), radius(s0), bodies_[b], r, kTwoContactSamples, out);
   }
 
-  /// Does the ball (x, r) overlap any particle of V by more than the contact tolerance?
-  /// The neighbour that blocked the previous candidate is tried first: it usually blocks the next.
-  bool overlaps_neighbour(Draft r, const Vec<D>& x) {
+  /// Does the ball (x, r) overlap any particle of V by more than `allowance` x the contact
+  /// tolerance? The neighbour that blocked the previous candidate is tried first: it usually
+  /// blocks the next.
+  bool overlaps_neighbour(Draft r, const Vec<D>& x, double allowance = 1.0) {
     const int n = static_cast<int>(nb_c_.size());
+    const double tol = tol_ * allowance;
     auto blocks = [&](int q) {
       const double rk = nb_r_[q];
-      const double lim = r + rk - tol_ * std::min(r, rk);
+      const double lim = r + rk - tol * std::min(r, rk);
       return (nb_c_[q] - x).squaredNorm() < lim * lim;
     };
     if (last_blocker_ < n && blocks(last_blocker_)) return true;

@@ -51,6 +51,18 @@ Json validation_json(const ValidationReport& v) {
   Json worst = Json::array();
   for (const ValidationIssue& w : v.worst)
     worst.push_back(Json{{"kind", w.kind}, {"i", w.i}, {"j", w.j}, {"value_rel", w.value_rel}});
+  // Per template (null where not computed): the law, its tests and the nematic order about its axis.
+  Json orientations = Json::array();
+  for (const OrientationFit& f : v.orientations) {
+    if (!f.computed()) {
+      orientations.push_back(nullptr);
+      continue;
+    }
+    Json tests = Json::object();
+    for (const OrientationFit::Test& t : f.tests) tests[t.name] = Json{{"statistic", t.statistic}, {"p", t.p}};
+    orientations.push_back(Json{{"law", f.law}, {"n", f.n}, {"tests", tests}, {"order", f.order},
+                                {"law_order", f.law_order}, {"order_noise", f.order_noise}});
+  }
   return Json{{"ok", v.ok},
               {"tolerance", v.tolerance},
               {"radii_alpha", v.radii_alpha},
@@ -66,7 +78,9 @@ Json validation_json(const ValidationReport& v) {
               {"wall_contacts", v.wall_contacts},
               {"max_contact_gap_rel", v.max_contact_gap_rel},
               {"worst", worst},
-              {"radii", radii_fit_fields(Json::object(), v.radii())}};
+              {"radii", radii_fit_fields(Json::object(), v.radii())},
+              {"orientation_alpha", v.orientation_alpha},
+              {"orientations", orientations}};
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 
 #include "core/geometry/container.hpp"
 #include "core/geometry/tet_mesh.hpp"
+#include "core/sampling/orientation_law.hpp"
 #include "core/sampling/radius_distribution.hpp"
 
 namespace fp {
@@ -112,6 +113,12 @@ struct PackerOptions {
   double hierarchical_grid_ratio = 4.0;      ///< use the hierarchical grid when r_max / r_min exceeds this
   std::optional<std::vector<double>> seed_point;  ///< where growth starts (default: container interior point)
   MinimisationOptions minimisation;          ///< non-spherical particles only
+  /// Non-spherical particles: orientations drawn from the template's law per placement, the
+  /// position kept by the compactness rule over all of them (front/advancing_front.hpp).
+  int orientation_trials = 1;
+  /// Non-spherical particles: turns tried per placement by the roll, which turns the particle
+  /// within its law while it touches the same bodies, towards the seed point (0: no roll).
+  int roll_steps = 60;
   ContactSolverChoice contact_solver = ContactSolverChoice::Auto;  ///< non-spherical particles only
   /// Threads (0: every hardware thread). Above 1 the container is grown in blocks
   /// (front/block_front.hpp), whose output does not depend on the thread count.
@@ -231,11 +238,6 @@ struct ShapeParameters {
   SourceSpot spot;                                                      ///< the template itself
 };
 
-/// How the orientation of each particle of a template is drawn.
-struct OrientationSpec {
-  enum class Kind { Random, Fixed } kind = Kind::Random;  ///< uniform random rotation (Haar), or one fixed rotation
-  std::vector<double> fixed;  ///< Fixed: 2D [angle in degrees]; 3D [w, x, y, z] unit quaternion
-};
 
 /// One particle template: a shape family, its parameters, a size distribution on a named
 /// dimension and an orientation distribution. `fraction` weights templates by number.

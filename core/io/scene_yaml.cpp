@@ -382,7 +382,19 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
                  "grid_cell_factor", "hierarchical_grid_ratio", "seed_point", "minimisation", "contact_solver", "threads", "block_edge",
                  "overlap", "z_min", "loose", "fallback_r_min", "mesh_edge", "random_tries", "near_tries",
                  "two_contact_tries", "nuclei", "pairs_per_nucleus", "reshapes", "order", "voids",
-                 "random_share"});
+                 "random_share", "orientation_trials", "roll_steps"});
+  const std::pair<const char*, int PackerOptions::*> orientation_keys[] = {{"orientation_trials", &PackerOptions::orientation_trials},
+                                                                           {"roll_steps", &PackerOptions::roll_steps}};
+  for (const auto& [key, member] : orientation_keys)
+    if (auto x = m.find(key)) {
+      if (!shapes)
+        x->fail("chooses the orientation of particle templates ('particles: [{shape: ..., size: ...}]'); this scene has "
+                "spheres ('particles: {radius: ...}'), which have none");
+      const std::uint64_t n = x->unsigned_integer();
+      const std::uint64_t least = std::string(key) == "orientation_trials" ? 1 : 0;
+      if (n < least || n > 10000) x->fail("must be an integer from " + std::to_string(least) + " to 10000 (got " + x->node().Scalar() + ")");
+      p.*member = static_cast<int>(n);
+    }
   if (auto x = m.find("contact_solver")) {
     if (!shapes)
       x->fail("used by particle templates only; this scene has spheres ('particles: {radius: ...}'), whose contacts are "
@@ -735,20 +747,57 @@ void parse_shape_parameter(const Value& v, const std::string& name, ShapeParamet
 
 template <int D>
 OrientationSpec parse_orientation(const Value& v) {
-  const std::string forms = D == 2 ? "'random' or {fixed: <angle in degrees>}"
-                                   : "'random' or {fixed: [w, x, y, z]} (a unit quaternion)";
+  const std::string forms = std::string("'random' (isotropic), ") +
+                            (D == 2 ? "{fixed: <angle in degrees>}" : "{fixed: [w, x, y, z]} (a unit quaternion)") +
+                            ", or {law: watson | fisher, axis: " + (D == 2 ? "[x, y]" : "[x, y, z]") +
+                            ", kappa: K} (or order: S instead of kappa)";
   OrientationSpec o;
   const YAML::Node& n = v.node();
   if (n.IsScalar() && n.Tag() != "!") {
     const std::string s = n.Scalar();
-    if (s != "random") v.fail("unknown orientation '" + s + "'" + suggestion(s, {"random"}) + "; expected " + forms);
+    if (s != "random" && s != "isotropic")
+      v.fail("unknown orientation '" + s + "'" + suggestion(s, {"random", "isotropic"}) + "; expected " + forms);
     return o;
   }
   if (!n.IsMap()) v.fail("expected " + forms + ", got " + shown(n));
   const Map m = v.map();
-  m.check_known({"fixed"});
+  m.check_known({"fixed", "law", "axis", "kappa", "order"});
+  if (auto law = m.find("law")) {
+    if (m.has("fixed")) law->fail("give either a fixed orientation or a law, not both");
+    const std::string name = law->choice({"watson", "fisher", "isotropic"});
+    if (name == "isotropic") {
+      for (const char* key : {"axis", "kappa", "order"})
+        if (auto x = m.find(key)) x->fail("the isotropic law has no parameters");
+      return o;
+    }
+    o.kind = name == "watson" ? OrientationKind::Watson : OrientationKind::Fisher;
+    const Value axis = m.get("axis", std::string("the law's axis, ") + (D == 2 ? "[x, y]" : "[x, y, z]"));
+    const Vec<D> a = axis.vec<D>(dim_text(D));
+    if (!(a.norm() > 0)) axis.fail("the axis must be a non-zero vector");
+    const Vec<D> unit = a.normalized();
+    o.axis.assign(unit.data(), unit.data() + D);
+    const auto kappa = m.find("kappa"), order = m.find("order");
+    if (kappa && order) order->fail("give either kappa or order, not both");
+    if (!kappa && !order) m.fail("the " + name + " law needs its concentration: kappa: K, or the nematic order it is to have: order: S");
+    if (kappa) {
+      o.kappa = kappa->number();
+      if (!(std::abs(o.kappa) <= kMaxConcentration))
+        kappa->fail("must be within [-1000, 1000] (got " + kappa->node().Scalar() + "); for all particles alike, give a fixed orientation");
+      if (o.kind == OrientationKind::Fisher && o.kappa < 0)
+        kappa->fail("fisher's kappa must be >= 0 (the law points the axis along 'axis'; reverse the axis instead)");
+    } else {
+      try {
+        o.kappa = OrientationLaw<D>::concentration_for_order(o.kind, order->number());
+      } catch (const std::invalid_argument& e) {
+        order->fail(e.what());
+      }
+    }
+    return o;
+  }
+  for (const char* key : {"axis", "kappa", "order"})
+    if (auto x = m.find(key)) x->fail("a parameter of a law about an axis: needs 'law: watson' or 'law: fisher'");
   const Value f = m.get("fixed", forms);
-  o.kind = OrientationSpec::Kind::Fixed;
+  o.kind = OrientationKind::Fixed;
   if constexpr (D == 2) {
     if (!f.node().IsScalar())
       f.fail("in 2D the fixed orientation is one angle in degrees, e.g. {fixed: 30}, got " + shown(f.node()));

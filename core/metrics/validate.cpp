@@ -38,6 +38,19 @@ bool ValidationReport::sizes_ok() const {
   return !mix || !(mix->p < level);
 }
 
+int ValidationReport::orientation_tests() const {
+  int n = 0;
+  for (const OrientationFit& f : orientations) n += static_cast<int>(f.tests.size());
+  return n;
+}
+
+bool ValidationReport::orientations_ok() const {
+  const double level = orientation_level();
+  for (const OrientationFit& f : orientations)
+    if (!f.passes(level)) return false;
+  return true;
+}
+
 std::string ValidationReport::summary() const {
   char buf[512];
   if (empty()) return "validate: FAILED: the packing holds no particles";
@@ -69,6 +82,14 @@ std::string ValidationReport::summary() const {
     s += buf;
   }
   std::snprintf(buf, sizeof buf, "\n  each size test fails below %.3g%s", test_level(), sizes_ok() ? "" : ": FAILED");
+  s += buf;
+  if (orientation_tests() == 0) return s;
+  const bool single = orientations.size() == 1;
+  for (std::size_t t = 0; t < orientations.size(); ++t)
+    if (orientations[t].computed())
+      s += (single ? "\n  orientations (" : "\n  orientations of template " + std::to_string(t) + " (") + orientations[t].law + "): " +
+           orientations[t].describe();
+  std::snprintf(buf, sizeof buf, "\n  each orientation test fails below %.3g%s", orientation_level(), orientations_ok() ? "" : ": FAILED");
   return s + buf;
 }
 
@@ -85,9 +106,15 @@ std::string ValidationReport::one_line() const {
   if (radius_count + non_finite_count)
     s += "; " + std::to_string(radius_count) + " sizes out of range, " + std::to_string(non_finite_count) + " non-finite";
   if (tests() == 0) return s + "; no size law to test)";
-  std::snprintf(buf, sizeof buf, "; %d size test%s at %.3g: %s)", tests(), tests() > 1 ? "s" : "", test_level(),
+  std::snprintf(buf, sizeof buf, "; %d size test%s at %.3g: %s", tests(), tests() > 1 ? "s" : "", test_level(),
                 sizes_ok() ? "passed" : "FAILED");
-  return s + buf;
+  s += buf;
+  if (orientation_tests() > 0) {
+    std::snprintf(buf, sizeof buf, "; %d orientation test%s at %.3g: %s", orientation_tests(), orientation_tests() > 1 ? "s" : "",
+                  orientation_level(), orientations_ok() ? "passed" : "FAILED");
+    s += buf;
+  }
+  return s + ")";
 }
 
 namespace {

@@ -14,6 +14,7 @@
 #include "core/geometry/container.hpp"
 #include "core/geometry/packing.hpp"
 #include "core/metrics/contact_network.hpp"
+#include "core/metrics/orientation_fit.hpp"
 #include "core/metrics/radii_fit.hpp"
 #include "core/sampling/chi_square_test.hpp"
 #include "core/sampling/radius_distribution.hpp"
@@ -36,11 +37,12 @@ struct ValidationIssue {
   double value_rel = 0.0;
 };
 
-/// What a packing was asked for, per template id: the size law (the radius law of spheres) and
-/// the share by number.
+/// What a packing was asked for, per template id: the size law (the radius law of spheres), the
+/// share by number and (shapes) the orientation law.
 struct RequestedTemplate {
   const RadiusDistribution* size = nullptr;
   double fraction = 1.0;
+  const OrientationSpec* orientation = nullptr;  ///< null: orientations not tested (spheres)
 };
 
 /// The one report of every packing's check (validate_particles.hpp), spheres and shapes. Lengths
@@ -70,7 +72,17 @@ struct ValidationReport {
   /// Two templates or more: chi-square of the counts per template against the requested shares.
   std::optional<ChiSquareResult> mix;
 
+  /// Shapes: the test of each template's orientations against its law (orientation_fit.hpp); a
+  /// template without a law or without particles is not computed. Their tests share their own
+  /// level, orientation_alpha (Bonferroni), beside the size tests'.
+  std::vector<OrientationFit> orientations;
+  double orientation_alpha = kOrientationAlpha;
+
   bool empty() const { return particles == 0; }
+  /// Orientation tests computed (a template's polar, azimuth and spin count three).
+  int orientation_tests() const;
+  double orientation_level() const { return orientation_tests() > 0 ? orientation_alpha / orientation_tests() : orientation_alpha; }
+  bool orientations_ok() const;
   double mean_coordination() const { return particles ? 2.0 * static_cast<double>(contacts) / static_cast<double>(particles) : 0.0; }
   /// The radii of a packing of spheres (the one size law); not computed otherwise.
   const RadiiFit& radii() const;

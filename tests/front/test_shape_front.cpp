@@ -16,6 +16,7 @@
 #include "core/geometry/box_container.hpp"
 #include "core/geometry/local_frame.hpp"
 #include "core/geometry/mesh_container.hpp"
+#include "core/metrics/orientation_fit.hpp"
 #include "core/geometry/polygon_container.hpp"
 #include "core/sampling/ks_test.hpp"
 #include "front/pack_shapes_scene.hpp"
@@ -163,7 +164,7 @@ void check_packing(const PackRun<D>& run, const PackSetup<D>& setup, std::uint64
   EXPECT_EQ(in.boundary_points_inside, 0u) << "e.g. into particle " << in.worst_boundary_particle;
   // The library's validation agrees.
   std::vector<fp::RequestedTemplate> requested;
-  for (const auto& t : run.templates) requested.push_back({t.size.get(), t.fraction});
+  for (const auto& t : run.templates) requested.push_back({t.size.get(), t.fraction, &t.orientation});
   const fp::ValidationReport v = fp::validate_shapes<D>(P, *setup.container, run.res.contact_tolerance, requested);
   EXPECT_TRUE(v.ok) << v.summary();
   EXPECT_EQ(v.overlap_count, 0u);
@@ -552,6 +553,81 @@ TEST(ShapeFrontDistributions, FixedOrientationIsExact) {
     const fp::Mat<3> R = run.res.packing.particles[0].pose.rotation;
     EXPECT_NEAR((R * Vec3::UnitX() - Vec3::UnitY()).norm(), 0.0, 1e-6);
     for (const auto& p : run.res.packing.particles) EXPECT_EQ(p.pose.rotation, R);
+  }
+}
+
+// Laws about an axis are kept by the packing, with the roll (which turns a particle about its own
+// axis only) and orientation trials (drawn from the law) on: the library's orientation tests pass,
+// the sample's nematic order about the axis is the law's within its noise, and the same particles
+// fail the test against the isotropic law (the test sees what differs).
+TEST(ShapeFrontOrientation, LawsAboutAnAxisAreKept) {
+  auto box = [](double side) {
+    PackSetup<3> s;
+    s.container = std::make_shared<fp::BoxContainer<3>>(Vec3::Zero(), Vec3::Constant(side));
+    s.sd = box_distance<3>(Vec3::Zero(), Vec3::Constant(side));
+    s.name = "box";
+    return s;
+  };
+  const PackSetup<3> setup = box(3.5);
+  for (const char* law : {"{law: watson, axis: [0, 0, 1], kappa: 6}", "{law: fisher, axis: [1, 1, 0], order: 0.5}"}) {
+    SCOPED_TRACE(law);
+    const PackRun<3> run = pack_run<3>(kFamilies3.at("spherocylinder") + "    orientation: " + law + "\n", setup, 200, 5,
+                                       [](fp::PackerOptions& o) { o.orientation_trials = 2; });
+    check_packing<3>(run, setup, 200);
+    EXPECT_GT(run.res.counters.roll_kept, 0u);
+    EXPECT_GT(run.res.counters.orientation_draws, 0u);
+    const fp::OrientationSpec& spec = run.templates[0].orientation;
+    std::vector<fp::Mat<3>> rotations;
+    for (const auto& p : run.res.packing.particles) rotations.push_back(p.pose.rotation);
+    const fp::OrientationFit fit = fp::orientation_fit<3>(rotations, spec.law<3>());
+    EXPECT_TRUE(fit.passes(fp::kOrientationAlpha / 3)) << fit.describe();
+    EXPECT_NEAR(fit.order, fit.law_order, 4 * fit.order_noise) << fit.describe();
+    EXPECT_FALSE(fp::orientation_fit<3>(rotations, fp::OrientationLaw<3>::isotropic()).passes(1e-4));
+  }
+  // 2D: a law about an axis allows no turn (it would change the angle): no roll, the law kept.
+  PackSetup<2> flat;
+  flat.container = std::make_shared<fp::BoxContainer<2>>(Vec2::Zero(), Vec2(10, 10));
+  flat.sd = box_distance<2>(Vec2::Zero(), Vec2(10, 10));
+  flat.name = "box [0,10]^2";
+  const PackRun<2> run = pack_run<2>(kFamilies2.at("spherocylinder") + "    orientation: {law: watson, axis: [1, 0], kappa: 3}\n", flat, 150, 5);
+  check_packing<2>(run, flat, 150);
+  EXPECT_EQ(run.res.counters.roll_turns, 0u);
+}
+
+// The roll and the orientation trials are what the front's density for shapes rests on
+// (experiments/shape-density): each must give a valid packing, and a denser one than without it,
+// for the same drafts (cubes and capsules, a box of ~250 particles).
+TEST(ShapeFrontOrientation, RollAndTrialsPackDenserAndValid) {
+  PackSetup<3> setup;
+  setup.container = std::make_shared<fp::BoxContainer<3>>(Vec3::Zero(), Vec3::Constant(3.5));
+  setup.sd = box_distance<3>(Vec3::Zero(), Vec3::Constant(3.5));
+  setup.name = "box [0,3.5]^3";
+  for (const char* family : {"polyhedron", "spherocylinder"}) {
+    SCOPED_TRACE(family);
+    const std::string particles = family == std::string("polyhedron") ? "  - shape: polyhedron\n    preset: cube\n" + kSize
+                                                                      : kFamilies3.at(family);
+    auto fill = [&](int roll, int trials) {
+      // Until the front runs empty: the solid the container takes.
+      return pack_run<3>(particles, setup, 100000, 3, [&](fp::PackerOptions& o) {
+        o.roll_steps = roll;
+        o.orientation_trials = trials;
+      });
+    };
+    const PackRun<3> plain = fill(0, 1), rolled = fill(60, 1), both = fill(60, 3);
+    for (const PackRun<3>* run : {&plain, &rolled, &both}) {
+      EXPECT_EQ(run->res.stop, fp::StopReason::FrontExhausted);
+      PackRun<3> whole = *run;
+      // check_packing asks for a count stop: the independent checks of the whole packing.
+      whole.res.stop = fp::StopReason::ParticleCount;
+      check_packing<3>(whole, setup, run->res.packing.size());
+    }
+    EXPECT_EQ(plain.res.counters.roll_turns, 0u);
+    EXPECT_GT(rolled.res.counters.roll_kept, rolled.res.packing.size());  // most placements roll, some several times
+    EXPECT_GT(both.res.counters.orientation_draws, 0u);
+    std::printf("  %s: solid %.4f plain, %.4f rolled, %.4f rolled with 3 trials\n", family, plain.res.solid_measure,
+                rolled.res.solid_measure, both.res.solid_measure);
+    EXPECT_GT(rolled.res.solid_measure, 1.03 * plain.res.solid_measure);
+    EXPECT_GT(both.res.solid_measure, 1.03 * plain.res.solid_measure);
   }
 }
 

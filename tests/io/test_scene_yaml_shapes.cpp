@@ -79,7 +79,7 @@ TEST(SceneYamlShapes, ListOfTemplatesWithEveryKindOfParameter) {
   const ParticleTemplateSpec& a = s.particle_templates[0];
   EXPECT_EQ(a.family, "spherocylinder");
   EXPECT_EQ(a.size_on, "circumscribed_radius");  // default
-  EXPECT_EQ(a.orientation.kind, OrientationSpec::Kind::Random);  // default
+  EXPECT_EQ(a.orientation.kind, OrientationSpec::Kind::Isotropic);  // default
   EXPECT_EQ(a.fraction, 3.0);
   const auto* uni = dynamic_cast<const UniformRadius*>(a.size.get());
   ASSERT_NE(uni, nullptr);
@@ -206,9 +206,9 @@ TEST(SceneYamlShapes, Orientation2D) {
   auto orientation = [](const std::string& line) {
     return parse_scene(kRect2 + kCapsules + line, kFile).particle_templates.at(0).orientation;
   };
-  EXPECT_EQ(orientation("").kind, OrientationSpec::Kind::Random);
+  EXPECT_EQ(orientation("").kind, OrientationSpec::Kind::Isotropic);
   EXPECT_TRUE(orientation("").fixed.empty());
-  EXPECT_EQ(orientation("    orientation: random\n").kind, OrientationSpec::Kind::Random);
+  EXPECT_EQ(orientation("    orientation: random\n").kind, OrientationSpec::Kind::Isotropic);
   const OrientationSpec f = orientation("    orientation: {fixed: 30}\n");
   EXPECT_EQ(f.kind, OrientationSpec::Kind::Fixed);
   EXPECT_EQ(f.fixed, (std::vector<double>{30}));
@@ -219,7 +219,7 @@ TEST(SceneYamlShapes, Orientation3D) {
   auto orientation = [](const std::string& line) {
     return parse_scene(kBox3 + kCapsules + line, kFile).particle_templates.at(0).orientation;
   };
-  EXPECT_EQ(orientation("    orientation: random\n").kind, OrientationSpec::Kind::Random);
+  EXPECT_EQ(orientation("    orientation: random\n").kind, OrientationSpec::Kind::Isotropic);
   const OrientationSpec f = orientation("    orientation: {fixed: [0, 0, 0.6, 0.8]}\n");
   EXPECT_EQ(f.kind, OrientationSpec::Kind::Fixed);
   ASSERT_EQ(f.fixed.size(), 4u);
@@ -355,7 +355,7 @@ TEST(SceneYamlShapesErrors, BadOrientation) {
   expect_error(kBox3 + kCapsules + "    orientation: randm\n", 6, "particles[0].orientation",
                {"unknown orientation 'randm'", "did you mean 'random'", "{fixed: [w, x, y, z]}"});
   expect_error(kRect2 + kCapsules + "    orientation: fixed\n", 6, "particles[0].orientation", {"{fixed: <angle in degrees>}"});
-  expect_error(kBox3 + kCapsules + "    orientation: [1, 0, 0, 0]\n", 6, "particles[0].orientation", {"expected 'random' or {fixed:", "a list"});
+  expect_error(kBox3 + kCapsules + "    orientation: [1, 0, 0, 0]\n", 6, "particles[0].orientation", {"expected 'random' (isotropic), {fixed:", "{law: watson | fisher", "a list"});
   expect_error(kBox3 + kCapsules + "    orientation: {fixd: [1, 0, 0, 0]}\n", 6, "particles[0].orientation.fixd",
                {"unknown key", "did you mean 'fixed'"});
   expect_error(kBox3 + kCapsules + "    orientation: {}\n", 6, "particles[0].orientation.fixed", {"missing required key"});
@@ -369,6 +369,63 @@ TEST(SceneYamlShapesErrors, BadOrientation) {
                {"4 components, got 3"});
   expect_error(kBox3 + kCapsules + "    orientation:\n      fixed: [1, 0, x, 0]\n", 7, "particles[0].orientation.fixed[2]",
                {"expected a number", "'x'"});
+}
+
+TEST(SceneYamlShapesErrors, BadOrientationLaw) {
+  const std::string c = kBox3 + kCapsules;
+  expect_error(c + "    orientation: {law: watsn, axis: [0, 0, 1], kappa: 2}\n", 6, "particles[0].orientation.law",
+               {"unknown value 'watsn'", "did you mean 'watson'"});
+  expect_error(c + "    orientation: {law: watson, kappa: 2}\n", 6, "particles[0].orientation.axis", {"missing required key", "[x, y, z]"});
+  expect_error(c + "    orientation: {law: watson, axis: [0, 0]}\n", 6, "particles[0].orientation.axis", {"must have 3 components"});
+  expect_error(c + "    orientation: {law: watson, axis: [0, 0, 0], kappa: 1}\n", 6, "particles[0].orientation.axis", {"non-zero"});
+  expect_error(c + "    orientation: {law: watson, axis: [0, 0, 1]}\n", 6, "particles[0].orientation", {"needs its concentration", "order: S"});
+  expect_error(c + "    orientation: {law: watson, axis: [0, 0, 1], kappa: 1, order: 0.5}\n", 6, "particles[0].orientation.order",
+               {"either kappa or order"});
+  expect_error(c + "    orientation: {law: watson, axis: [0, 0, 1], kappa: 2000}\n", 6, "particles[0].orientation.kappa",
+               {"within [-1000, 1000]", "fixed orientation"});
+  expect_error(c + "    orientation: {law: fisher, axis: [0, 0, 1], kappa: -1}\n", 6, "particles[0].orientation.kappa", {">= 0"});
+  expect_error(c + "    orientation: {law: watson, axis: [0, 0, 1], order: 1}\n", 6, "particles[0].orientation.order",
+               {"nematic order 1 is beyond"});
+  expect_error(c + "    orientation: {law: fisher, axis: [0, 0, 1], order: -0.2}\n", 6, "particles[0].orientation.order", {"beyond"});
+  expect_error(c + "    orientation: {law: watson, fixed: [1, 0, 0, 0], axis: [0, 0, 1], kappa: 1}\n", 6, "particles[0].orientation.law",
+               {"not both"});
+  expect_error(c + "    orientation: {law: isotropic, kappa: 1}\n", 6, "particles[0].orientation.kappa", {"no parameters"});
+  expect_error(c + "    orientation: {fixed: [1, 0, 0, 0], kappa: 1}\n", 6, "particles[0].orientation.kappa", {"needs 'law: watson'"});
+  expect_error(kRect2 + kCapsules + "    orientation: {law: fisher, axis: [0, 0, 1], kappa: 1}\n", 6, "particles[0].orientation.axis",
+               {"must have 2 components"});
+}
+
+TEST(SceneYamlShapes, OrientationLaws) {
+  auto orientation = [](const std::string& base, const std::string& line) {
+    return parse_scene(base + kCapsules + line, kFile).particle_templates.at(0).orientation;
+  };
+  const OrientationSpec w = orientation(kBox3, "    orientation: {law: watson, axis: [0, 0, 2], kappa: -3}\n");
+  EXPECT_EQ(w.kind, OrientationKind::Watson);
+  EXPECT_EQ(w.axis, (std::vector<double>{0, 0, 1}));
+  EXPECT_EQ(w.kappa, -3.0);
+  // An order S instead of kappa: the kappa that gives it.
+  const OrientationSpec s = orientation(kBox3, "    orientation: {law: watson, axis: [1, 0, 0], order: 0.5}\n");
+  EXPECT_NEAR(s.law<3>().angle_law()->order(), 0.5, 1e-7);
+  const OrientationSpec f = orientation(kRect2, "    orientation: {law: fisher, axis: [0, 3], order: 0.3}\n");
+  EXPECT_EQ(f.kind, OrientationKind::Fisher);
+  EXPECT_EQ(f.axis, (std::vector<double>{0, 1}));
+  EXPECT_NEAR(f.law<2>().angle_law()->order(), 0.3, 1e-7);
+  EXPECT_EQ(orientation(kBox3, "    orientation: isotropic\n").kind, OrientationKind::Isotropic);
+  EXPECT_EQ(orientation(kBox3, "    orientation: {law: isotropic}\n").kind, OrientationKind::Isotropic);
+}
+
+TEST(SceneYamlShapes, OrientationSearchKeys) {
+  const Scene d = parse_scene(kBox3 + kCapsules, kFile);
+  EXPECT_EQ(d.packer.orientation_trials, 1);
+  EXPECT_EQ(d.packer.roll_steps, 60);
+  const Scene s = parse_scene(kBox3 + kCapsules + "packer: {orientation_trials: 4, roll_steps: 0}\n", kFile);
+  EXPECT_EQ(s.packer.orientation_trials, 4);
+  EXPECT_EQ(s.packer.roll_steps, 0);
+  expect_error(kBox3 + kCapsules + "packer: {orientation_trials: 0}\n", 6, "packer.orientation_trials", {"from 1 to 10000"});
+  expect_error(kBox3 + kCapsules + "packer: {roll_steps: -1}\n", 6, "packer.roll_steps", {"non-negative integer"});
+  expect_error("dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [10, 10, 10]}\n"
+               "particles: {radius: {distribution: uniform, min: 1, max: 2}}\npacker: {roll_steps: 5}\n",
+               4, "packer.roll_steps", {"spheres", "have none"});
 }
 
 TEST(SceneYamlShapesErrors, NonUnitQuaternion) {
