@@ -49,6 +49,7 @@ PackCheck pack_check_of(const PackingAnalysis& a) {
   const ContactStats& cs = a.coordination;
   const double n = static_cast<double>(a.particles);
   c.metrics = {{"volume_fraction_core", a.vf_core.vf.value},
+               {"volume_fraction_wall_layer", a.wall_profile.layer.value},
                {"volume_fraction_reference_sphere", a.vf_reference},
                {"volume_fraction_cells_mean", a.vf_cells.mean},
                {"volume_fraction_cells_std", a.vf_cells.std_dev},

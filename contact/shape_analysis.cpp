@@ -118,6 +118,10 @@ PackingAnalysis analyze_shape_packing(const ShapePacking<D>& packing, const Cont
       a.vf_container = vf_region<D>(bodies, container, 0.0, options.qmc);
     }
     a.vf_core = vf_region<D>(bodies, container, 2.0 * bounding_max, options.qmc);
+    // The shells cut many particles each: fewer QMC points per particle than a region of its own.
+    QmcOptions per_shell = options.qmc;
+    per_shell.max_ball_points = std::min<std::size_t>(per_shell.max_ball_points, std::size_t{1} << 17);
+    a.wall_profile = wall_profile<D>(bodies, container, 2.0 * bounding_max / kWallShells, kWallShells, per_shell);
     // Per cell, each particle as its ball of the same volume (cells are many diameters wide).
     a.vf_cells = cell_volume_fraction_auto(balls, container, a.r_mean, bounding_max);
   });

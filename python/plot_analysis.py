@@ -5,7 +5,7 @@
 
 ANALYSIS.json is core/io/analysis_json.hpp's layout; RADIUS_CDF.csv has columns
 r,empirical,requested (requested empty without a scene). Writes vf_curve.png,
-coordination.png, radii.png, rdf.png, partial_coordination.png and fabric.png.
+wall_profile.png, coordination.png, radii.png, rdf.png, partial_coordination.png and fabric.png.
 Exit code 3 when matplotlib is missing (Debian: apt-get install python3-matplotlib).
 """
 import csv
@@ -38,6 +38,23 @@ def vf_curve(a, out_dir):
     ax.set_title("VF against r_ref (paper 002, Eq. 2)")
     ax.grid(alpha=0.3)
     save(fig, out_dir, "vf_curve.png")
+
+
+def wall_profile(a, out_dir):
+    vf = a["volume_fraction"]
+    w = vf.get("wall_profile", {})
+    if not w.get("vf"):
+        return
+    fig, ax = plt.subplots(figsize=(5, 3.5))
+    ax.errorbar(w["distance"], w["vf"], yerr=w["std_error"], fmt="o-", ms=3, capsize=2, label="shells of the container")
+    ax.axhline(vf["core"]["value"], color="grey", ls="--", lw=0.8, label="core (2 r_max inside)")
+    ax.axhline(vf["container"]["value"], color="grey", ls=":", lw=0.8, label="whole container")
+    ax.set_xlabel("distance from the container's boundary")
+    ax.set_ylabel("solid fraction")
+    ax.set_title("wall layers: %.4f within 2 r_max" % w["layer"])
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    save(fig, out_dir, "wall_profile.png")
 
 
 def coordination(a, out_dir):
@@ -124,6 +141,7 @@ def main():
         a = json.load(f)
     out_dir = sys.argv[3]
     vf_curve(a, out_dir)
+    wall_profile(a, out_dir)
     coordination(a, out_dir)
     radii(sys.argv[2], a, out_dir)
     rdf(a, out_dir)

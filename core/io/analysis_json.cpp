@@ -117,6 +117,16 @@ std::string analysis_json(const PackingAnalysis& a, bool include_timings) {
                      {"cells", a.vf_cells.cells}, {"mean", a.vf_cells.mean}, {"std_dev", a.vf_cells.std_dev},
                      {"min", a.vf_cells.min}, {"max", a.vf_cells.max}, {"worst", a.vf_cells.worst},
                      {"worst_centre", a.vf_cells.worst_centre}}}};
+  // The wall layers: each shell's middle distance from the boundary, solid fraction and error.
+  Json wall_distance = Json::array(), wall_vf = Json::array(), wall_error = Json::array();
+  for (std::size_t k = 0; k < a.wall_profile.vf.size(); ++k) {
+    wall_distance.push_back(a.wall_profile.middle(k));
+    wall_vf.push_back(a.wall_profile.vf[k].value);
+    wall_error.push_back(a.wall_profile.vf[k].std_error);
+  }
+  j["volume_fraction"]["wall_profile"] =
+      Json{{"width", a.wall_profile.width}, {"distance", wall_distance}, {"vf", wall_vf}, {"std_error", wall_error},
+           {"layer", a.wall_profile.layer.value}, {"layer_std_error", a.wall_profile.layer.std_error}};
 
   const ContactStats& c = a.coordination;
   const PartialCoordination& pc = a.partial_coordination;

@@ -61,6 +61,15 @@ std::string PackingAnalysis::summary() const {
        vf_curve.size(), radius_name == "r" ? "" : "; QMC for the particles it cuts");
   line("VF container         %s", estimate(vf_container).c_str());
   line("VF core              %s, 2 r_max = %.6g inside", estimate(vf_core).c_str(), vf_core.shrink);
+  if (wall_profile.computed()) {
+    std::string shells;
+    for (const Estimate& e : wall_profile.vf) {
+      std::snprintf(buf, sizeof buf, "%s%.3f", shells.empty() ? "" : " ", e.value);
+      shells += buf;
+    }
+    line("VF wall layers       %.4f within 2 r_max; shells of %.4g from the wall: %s", wall_profile.layer.value,
+         wall_profile.width, shells.c_str());
+  }
   if (vf_cells.computed())
     line("VF cells             mean %.4f, sd %.4f, range [%.4f, %.4f] over %llu cells of %g <d> (edge %.6g), 2 r_max inside",
          vf_cells.mean, vf_cells.std_dev, vf_cells.min, vf_cells.max, static_cast<unsigned long long>(vf_cells.cells),
@@ -203,6 +212,7 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
     }
     a.vf_container = vf_region(packing, *container, 0.0, options.qmc);
     a.vf_core = vf_region(packing, *container, 2.0 * a.r_max, options.qmc);
+    if (a.r_max > 0.0) a.wall_profile = wall_profile<D>(packing, *container, 2.0 * a.r_max / kWallShells, kWallShells, options.qmc);
   });
   steps.emplace_back("cells", [&] {
     a.vf_cells = cell_volume_fraction_auto(packing, *container, a.r_mean, a.r_max);

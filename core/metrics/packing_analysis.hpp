@@ -33,9 +33,13 @@
 #include "core/metrics/radial_distribution.hpp"
 #include "core/metrics/radii_fit.hpp"
 #include "core/metrics/validate.hpp"
+#include "core/metrics/wall_profile.hpp"
 #include "core/sampling/radius_distribution.hpp"
 
 namespace fp {
+
+/// The wall profile's shells: kWallShells of r_max / kWallShells * 2 (out to the core's 2 r_max).
+inline constexpr int kWallShells = 8;
 
 struct AnalysisOptions {
   double contact_tolerance = 1e-9;      ///< relative: a contact is gap <= tol * min(ri, rj)
@@ -70,6 +74,7 @@ struct PackingAnalysis {
   RegionVolumeFraction vf_container;     ///< whole container
   RegionVolumeFraction vf_core;          ///< container shrunk by 2 r_max
   CellVolumeFraction vf_cells;           ///< cells of 8 mean diameters (fewer if too few fit), 2 r_max inside
+  WallProfile wall_profile;              ///< shells of r_max / 4 from the boundary out to the core (2 r_max)
 
   // Contacts.
   ContactStats coordination;             ///< z, z with walls, histogram, rattlers, max overlap (all pairs)
