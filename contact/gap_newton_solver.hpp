@@ -3,9 +3,13 @@
 // the zero of the potential Σω_i² that the minimisation solver reaches with NLopt, here without
 // the minimiser). From each equivalent-sphere position (contact/gap_newton.hpp) it takes Newton
 // steps with the narrow phase's exact gaps and normals, each kept only if it reduces the largest
-// |ω_i|. Registered for the kind pairs whose gap is analytic and continuously differentiable in
-// the mobile's position outside deep overlap: 3D spherocylinders (capsules) with capsules,
-// spheres and smooth walls (paper 004 Eq. 5-6, segment distance). A position is kept when every
+// |ω_i|. Registered for every pair of kinds and every wall, below the closed-form solvers (which
+// take precedence where they cover a problem: contact/solver_registry.hpp): its home is the pairs
+// whose gap is analytic and continuously differentiable in the mobile's position outside deep
+// overlap, 3D capsules with capsules, spheres and smooth walls (paper 004 Eq. 5-6, segment
+// distance); elsewhere (polyhedra with spheres, capsules or curved walls, cylinders, mixes) the
+// narrow phase's gap is piecewise smooth and a start that stalls on a kink gives nothing, where
+// minimisation spent milliseconds on the same gaps. A position is kept when every
 // |ω_i| <= 1e-3 x gap_tolerance x the smaller circumscribed radius (the minimisation solver's
 // polish target); a start that does not get there gives nothing, so a position may be missed,
 // never returned wrong. Where minimisation runs SLSQP twice per solve (~26 gap vectors), this evaluates ~9:

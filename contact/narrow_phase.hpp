@@ -7,8 +7,10 @@
 // Exact without FCL: two convex polygons (separating axes on overlap, nearest points apart,
 // core/geometry/convex_polygon.hpp). Analytic fast paths (registered by kind pair):
 // sphere-sphere, sphere-spherocylinder and spherocylinder-spherocylinder through segment distance
-// (paper 004 Eq. 5-6), clusters of balls against those, and ellipsoids against ellipsoids and
-// spheres (Newton on the support functions, ellipsoid_gap.hpp). Every other pair goes through FCL's distance query with the libccd GJK
+// (paper 004 Eq. 5-6), clusters of balls against those, ellipsoids against ellipsoids and
+// spheres (Newton on the support functions, ellipsoid_gap.hpp), and convex polytopes against
+// spheres and clusters (a ball's centre against the face planes inside, the nearest point of the
+// facets outside). Every other pair goes through FCL's distance query with the libccd GJK
 // solver (exact when apart; the INDEP solver is wrong, see dependencies.md). On overlap the depth
 // comes from our own separating-axis search over support functions, not from FCL's EPA, whose
 // assertion aborts the process on some touching polytopes (seen packing cubes). Clusters are

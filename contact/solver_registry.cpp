@@ -11,6 +11,7 @@
 #include "contact/sphere_contact_solver.hpp"
 #include "shapes/cluster_shape.hpp"
 #include "shapes/convex_polytope_shape.hpp"
+#include "shapes/cylinder_shape.hpp"
 #include "shapes/ellipsoid_shape.hpp"
 #include "shapes/sphere_shape.hpp"
 #include "shapes/spherocylinder_shape.hpp"
@@ -21,20 +22,22 @@ template <int D>
 SolverRegistry<D>::SolverRegistry(const NarrowPhase<D>& narrow_phase, const MinimisationOptions& options, bool closed_form)
     : default_(std::make_shared<MinimisationSolver<D>>(narrow_phase, options)) {
   if (!closed_form) return;
+  {  // every kind with every kind and wall: Newton on the narrow phase's gaps, below the closed forms
+    auto solver = std::make_shared<GapNewtonSolver<D>>(narrow_phase, options.gap_tolerance);
+    const char* kinds[] = {SphereShape<D>::kKind,          SpherocylinderShape<D>::kKind, ClusterShape<D>::kKind,
+                           ConvexPolytopeShape<D>::kKind,  EllipsoidShape<D>::kKind,      CylinderShape::kKind};
+    for (const char* mobile : kinds) {
+      if (D == 2 && mobile == CylinderShape::kKind) continue;
+      add_walls(mobile, solver);
+      for (const char* fixed : kinds) add_pair(fixed, mobile, solver);
+    }
+  }
   if constexpr (D == 2) {  // rounded convex cores: disks, stadiums, polygons, clusters
     const char* cores[] = {SphereShape<2>::kKind, SpherocylinderShape<2>::kKind, ConvexPolytopeShape<2>::kKind, ClusterShape<2>::kKind};
     auto wrapper = std::make_shared<PolygonWrapperSolver>();
     for (const char* mobile : cores) {
       add_walls(mobile, wrapper);
       for (const char* fixed : cores) add_pair(fixed, mobile, wrapper);
-    }
-  }
-  if constexpr (D == 3) {  // capsules with capsules, spheres and smooth walls: Newton on exact gaps
-    auto solver = std::make_shared<GapNewtonSolver<D>>(narrow_phase, options.gap_tolerance);
-    const char* smooth[] = {SpherocylinderShape<D>::kKind, SphereShape<D>::kKind};
-    for (const char* mobile : smooth) {
-      for (const char* wall : {kPlaneWall, kSphereWall, kCylinderWall}) add_pair(wall, mobile, solver);
-      for (const char* fixed : smooth) add_pair(fixed, mobile, solver);
     }
   }
   if constexpr (D == 3) {  // polyhedra against polyhedra and plane walls (other walls: not taken)

@@ -2,14 +2,16 @@
 // Which contact solver places a mobile particle against given fixed bodies. Solvers are
 // registered for shape-kind pairs (fixed kind, mobile kind); a wall's kind is that of its
 // surface (kPlaneWall, ...), so a solver can take plane walls and leave curved ones.
-// Minimisation is the default for every pair. A problem goes to the most recently registered
-// solver that is registered for EVERY (fixed, mobile) pair of the problem, else to the default.
-// In 2D the polygon wrapper covers disks, stadiums, polygons, clusters and walls; in 3D the gap
-// Newton solver capsules, spheres and smooth walls, the polytope wrapper polyhedra and plane
-// walls; the ellipsoid solver, registered after them, takes ellipsoids (ellipses), spheres and
-// plane walls; the ball wrapper spheres (disks) and clusters with walls; the analytic sphere
-// solver, registered last, spheres and walls alone. A 3D capsule placed against a cluster or a
-// cylinder still goes to minimisation.
+// A problem goes to the most recently registered solver that is registered for EVERY (fixed,
+// mobile) pair of the problem, else to the default, minimisation. The gap Newton solver is
+// registered first, for every pair of kinds and every wall: what no closed form covers (mixes,
+// polyhedra with spheres or curved walls, cylinders) goes to it, not to minimisation. Then in 2D
+// the polygon wrapper covers disks, stadiums, polygons, clusters and walls; in 3D the polytope
+// wrapper polyhedra and plane walls; the ellipsoid solver, registered after them, takes
+// ellipsoids (ellipses), spheres and plane walls; the ball wrapper spheres (disks) and clusters
+// with walls; the analytic sphere solver, registered last, spheres and walls alone. Minimisation
+// is left for kinds registered by no one (a new family until it says otherwise) and for
+// `contact_solver: minimisation`.
 #include <array>
 #include <map>
 #include <memory>
@@ -34,10 +36,10 @@ inline constexpr const char* kWallKinds[] = {kPlaneWall, kSphereWall, kCylinderW
 template <int D>
 class SolverRegistry {
  public:
-  /// The default registry: minimisation everywhere; in 2D the polygon wrapper for rounded convex
-  /// cores, in 3D the gap Newton solver for capsules and the polytope wrapper for polyhedra; the
-  /// ellipsoid solver for ellipsoids, spheres and plane walls; the ball wrapper for spheres, clusters and walls; the analytic sphere
-  /// solver for spheres and walls.
+  /// The default registry: the gap Newton solver for every pair of built-in kinds; in 2D the
+  /// polygon wrapper for rounded convex cores, in 3D the polytope wrapper for polyhedra; the
+  /// ellipsoid solver for ellipsoids, spheres and plane walls; the ball wrapper for spheres,
+  /// clusters and walls; the analytic sphere solver for spheres and walls; minimisation elsewhere.
   /// With `closed_form` false, minimisation for every problem (no solver registered).
   SolverRegistry(const NarrowPhase<D>& narrow_phase, const MinimisationOptions& options, bool closed_form = true);
 

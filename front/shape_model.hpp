@@ -27,6 +27,7 @@
 #include "front/front_parts.hpp"
 #include "front/shape_front.hpp"
 #include "front/shape_template.hpp"
+#include "shapes/convex_polytope_shape.hpp"
 #include "shapes/sphere_shape.hpp"
 
 namespace fp {
@@ -55,7 +56,7 @@ class ShapeModel {
   ShapeModel(const Container<D>& container, const Input& templates, const PackerOptions& options,
               const Aabb<D>& centres)
       : container_(container), templates_(check(templates)), tol_(options.minimisation.gap_tolerance),
-        orientation_trials_(options.orientation_trials),
+        orientation_trials_(options.orientation_trials), face_to_face_(options.face_to_face),
         registry_(np_, options.minimisation, options.contact_solver == ContactSolverChoice::Auto),
         containment_(container, np_), r_min_(min_bounding(templates)), r_max_(r_max_of(templates)),
         grid_(grid_domain(centres, r_max_), r_min_, r_max_, options.grid_cell_factor, options.hierarchical_grid_ratio) {}
@@ -267,7 +268,31 @@ class ShapeModel {
   }
   const Mat<D>& orientation(const Draft& d) const { return d.rotation; }
   void set_orientation(Draft& d, const Mat<D>& r) const { d.rotation = r; }
-  void redraw_orientation(Draft& d, Rng& rng) const { d.rotation = law_of(d).draw(rng); }
+  /// Another trial orientation for the draft about to be placed against s0 (begin_placement):
+  /// from its law; with face_to_face, for a polytope against a polytope s0 under an isotropic
+  /// law, one of its faces turned against one of s0's (both drawn at random) and spun at random
+  /// about their common normal (3D): angular particles pack by face contacts. If s0's
+  /// orientation is a sample of the isotropic law, so is this one (s0's rotation times an
+  /// independent random rotation).
+  void redraw_orientation(Draft& d, Rng& rng) const {
+    const auto* mine = dynamic_cast<const ConvexPolytopeShape<D>*>(d.shape.get());
+    const Particle<D>& p0 = *fixed_[0].shaped;
+    const auto* theirs = dynamic_cast<const ConvexPolytopeShape<D>*>(p0.shape.get());
+    if (!face_to_face_ || !mine || !theirs || law_of(d).kind() != OrientationKind::Isotropic) {
+      d.rotation = law_of(d).draw(rng);
+      return;
+    }
+    const auto& m = mine->plane_normals();
+    const auto& f = theirs->plane_normals();
+    const Vec<D> own = m[static_cast<std::size_t>(rng.below(m.size()))];
+    const Vec<D> against = -(p0.pose.rotation * f[static_cast<std::size_t>(rng.below(f.size()))]);
+    if constexpr (D == 2) {
+      d.rotation = rotation_about<2>(Vec2::Zero(), std::atan2(against.y(), against.x()) - std::atan2(own.y(), own.x()));
+    } else {
+      const Mat<3> align = Eigen::Quaterniond::FromTwoVectors(own, against).toRotationMatrix();
+      d.rotation = rotation_about<3>(against, 2 * kPi * rng.uniform01()) * align;
+    }
+  }
   /// Turns the draft by an angle uniform in [-angle, angle]: about a random axis (isotropic law),
   /// about its own body axis (a law about an axis), in the plane (2D).
   void turn(Draft& d, double angle, Rng& rng) const {
@@ -431,6 +456,7 @@ class ShapeModel {
   const Input& templates_;
   double tol_;
   int orientation_trials_;
+  bool face_to_face_;
   NarrowPhase<D> np_;
   SolverRegistry<D> registry_;
   ShapeContainment<D> containment_;

@@ -116,6 +116,9 @@ struct PackerOptions {
   /// Non-spherical particles: orientations drawn from the template's law per placement, the
   /// position kept by the compactness rule over all of them (front/advancing_front.hpp).
   int orientation_trials = 1;
+  /// Non-spherical particles: orientation trials beyond the first turn a face of a polytope
+  /// against one of s0's (isotropic laws; other shapes draw from their law).
+  bool face_to_face = false;
   /// Non-spherical particles: turns tried per placement by the roll, which turns the particle
   /// within its law while it touches the same bodies, towards the seed point (0: no roll).
   int roll_steps = 60;

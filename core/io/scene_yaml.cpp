@@ -382,7 +382,13 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
                  "grid_cell_factor", "hierarchical_grid_ratio", "seed_point", "minimisation", "contact_solver", "threads", "block_edge",
                  "overlap", "z_min", "loose", "fallback_r_min", "mesh_edge", "random_tries", "near_tries",
                  "two_contact_tries", "nuclei", "pairs_per_nucleus", "reshapes", "order", "voids",
-                 "random_share", "orientation_trials", "roll_steps"});
+                 "random_share", "orientation_trials", "roll_steps", "face_to_face"});
+  if (auto x = m.find("face_to_face")) {
+    if (!shapes)
+      x->fail("chooses the orientation of particle templates ('particles: [{shape: ..., size: ...}]'); this scene has "
+              "spheres ('particles: {radius: ...}'), which have none");
+    p.face_to_face = x->boolean();
+  }
   const std::pair<const char*, int PackerOptions::*> orientation_keys[] = {{"orientation_trials", &PackerOptions::orientation_trials},
                                                                            {"roll_steps", &PackerOptions::roll_steps}};
   for (const auto& [key, member] : orientation_keys)

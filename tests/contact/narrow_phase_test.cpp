@@ -154,7 +154,8 @@ TEST(NarrowPhase, CrossingCapsulesOverlap) {
 
 // Reference tolerances (relative to the smaller circumscribed radius): exact pairs (analytic,
 // polytope-polytope through separating axes, ellipsoids against ellipsoids and spheres through
-// Newton on their support functions) to rounding; pairs with a curved FCL shape to 5e-8:
+// Newton on their support functions, polytopes against spheres and clusters by their facets) to
+// rounding; pairs with a curved FCL shape to 5e-8:
 // GJK's distance on curved supports is good to ~2e-8 (measured; its stopping rule), far below the
 // solver's gap tolerance of 1e-6.
 TEST(NarrowPhase, FclAndClusterPathsAgreeWithReferences2D) {
@@ -165,19 +166,20 @@ TEST(NarrowPhase, FclAndClusterPathsAgreeWithReferences2D) {
   check_against_reference<2>(Kind::Capsule, Kind::Polytope, 120, 24, 5e-8);
   check_against_reference<2>(Kind::Sphere, Kind::Ellipsoid, 120, 25, 1e-12);
   check_against_reference<2>(Kind::Cluster, Kind::Cluster, 120, 26, 1e-12);
-  check_against_reference<2>(Kind::Cluster, Kind::Polytope, 120, 27, 5e-8);
+  check_against_reference<2>(Kind::Cluster, Kind::Polytope, 120, 27, 1e-12);
+  check_against_reference<2>(Kind::Sphere, Kind::Polytope, 120, 29, 1e-12);
   check_against_reference<2>(Kind::Capsule, Kind::Ellipsoid, 120, 28, 5e-8);
 }
 
 TEST(NarrowPhase, FclAndClusterPathsAgreeWithReferences3D) {
   check_against_reference<3>(Kind::Polytope, Kind::Polytope, 100, 31, 1e-12);
   check_against_reference<3>(Kind::Ellipsoid, Kind::Ellipsoid, 60, 32, 1e-12);
-  check_against_reference<3>(Kind::Sphere, Kind::Polytope, 100, 33, 5e-8);
+  check_against_reference<3>(Kind::Sphere, Kind::Polytope, 100, 33, 1e-12);
   check_against_reference<3>(Kind::Capsule, Kind::Polytope, 100, 34, 5e-8);
   check_against_reference<3>(Kind::Sphere, Kind::Ellipsoid, 100, 35, 1e-12);
   check_against_reference<3>(Kind::Capsule, Kind::Ellipsoid, 60, 36, 5e-8);
   check_against_reference<3>(Kind::Cluster, Kind::Cluster, 100, 37, 1e-12);
-  check_against_reference<3>(Kind::Cluster, Kind::Polytope, 60, 38, 5e-8);
+  check_against_reference<3>(Kind::Cluster, Kind::Polytope, 60, 38, 1e-12);
   check_against_reference<3>(Kind::Polytope, Kind::Ellipsoid, 40, 39, 5e-8);
   check_against_reference<3>(Kind::Cylinder, Kind::Sphere, 100, 40, 5e-8);
   check_against_reference<3>(Kind::Cylinder, Kind::Capsule, 60, 41, 5e-8);
@@ -220,8 +222,8 @@ void predicates_round(Kind ka, Kind kb, int trials, std::uint64_t seed, double m
 TEST(NarrowPhase, OverlapAndReachPredicatesAgreeWithTheReference) {
   predicates_round<2>(Kind::Polytope, Kind::Polytope, 200, 51, 1e-12);
   predicates_round<3>(Kind::Polytope, Kind::Polytope, 200, 52, 1e-12);
-  predicates_round<3>(Kind::Sphere, Kind::Polytope, 60, 53, 5e-8);  // the general path
-  predicates_round<3>(Kind::Cluster, Kind::Polytope, 60, 54, 5e-8);
+  predicates_round<3>(Kind::Sphere, Kind::Polytope, 60, 53, 1e-12);  // by the facets
+  predicates_round<3>(Kind::Cluster, Kind::Polytope, 60, 54, 1e-12);
   // Ellipsoids with ellipsoids and spheres: one ascent, a point deep inside both, or the full search.
   predicates_round<2>(Kind::Ellipsoid, Kind::Ellipsoid, 200, 55, 1e-12);
   predicates_round<3>(Kind::Ellipsoid, Kind::Ellipsoid, 200, 56, 1e-12);
@@ -288,6 +290,8 @@ TEST(NarrowPhase, GradientIsFiniteDifferenceAndSymmetric2D) {
   gradient_and_symmetry<2>(Kind::Polytope, Kind::Polytope, 60, 55, false);
   gradient_and_symmetry<2>(Kind::Ellipsoid, Kind::Ellipsoid, 60, 56, true);
   gradient_and_symmetry<2>(Kind::Polytope, Kind::Capsule, 60, 57, true);
+  gradient_and_symmetry<2>(Kind::Polytope, Kind::Sphere, 60, 58, false);
+  gradient_and_symmetry<2>(Kind::Cluster, Kind::Polytope, 60, 59, false);
 }
 
 TEST(NarrowPhase, GradientIsFiniteDifferenceAndSymmetric3D) {
@@ -296,6 +300,8 @@ TEST(NarrowPhase, GradientIsFiniteDifferenceAndSymmetric3D) {
   gradient_and_symmetry<3>(Kind::Sphere, Kind::Capsule, 60, 63, false);
   gradient_and_symmetry<3>(Kind::Cluster, Kind::Sphere, 60, 64, false);
   gradient_and_symmetry<3>(Kind::Polytope, Kind::Polytope, 60, 65, false);
+  gradient_and_symmetry<3>(Kind::Polytope, Kind::Sphere, 60, 68, false);
+  gradient_and_symmetry<3>(Kind::Cluster, Kind::Polytope, 60, 69, false);
   gradient_and_symmetry<3>(Kind::Ellipsoid, Kind::Ellipsoid, 60, 66, true);
   gradient_and_symmetry<3>(Kind::Polytope, Kind::Capsule, 60, 67, true);
   gradient_and_symmetry<3>(Kind::Cylinder, Kind::Sphere, 60, 68, true);

@@ -1,14 +1,16 @@
 // The solver registry (contact/solver_registry.cpp): which contact solver a problem goes to.
-// Minimisation is the default for every pair; a registered solver is used only when EVERY pair
-// of the problem has it, the latest registered first: the analytic sphere solver for spheres and
-// walls alone, the ball wrapper where clusters join them, the ellipsoid solver where ellipsoids
-// do (with spheres and plane walls); an ellipsoid with a cluster: minimisation.
+// A registered solver is used only when EVERY pair of the problem has it, the latest registered
+// first: the analytic sphere solver for spheres and walls alone, the ball wrapper where clusters
+// join them, the ellipsoid solver where ellipsoids do (with spheres and plane walls); what no
+// closed form covers (an ellipsoid with a cluster) the gap Newton solver, registered first for
+// every pair of built-in kinds; a kind no solver is registered for: minimisation, the default.
 #include <gtest/gtest.h>
 
 #include <atomic>
 
 #include "contact/ball_wrapper_solver.hpp"
 #include "contact/ellipsoid_contact_solver.hpp"
+#include "contact/gap_newton_solver.hpp"
 #include "contact/polygon_wrapper_solver.hpp"
 #include "contact/solver_registry.hpp"
 #include "contact/sphere_contact_solver.hpp"
@@ -30,6 +32,10 @@ bool is_ellipsoid_solver(const ContactSolver<D>& s) {
   return dynamic_cast<const EllipsoidContactSolver<D>*>(&s) != nullptr;
 }
 bool is_polygon_wrapper(const ContactSolver<2>& s) { return dynamic_cast<const PolygonWrapperSolver*>(&s) != nullptr; }
+template <int D>
+bool is_gap_newton(const ContactSolver<D>& s) {
+  return dynamic_cast<const GapNewtonSolver<D>*>(&s) != nullptr;
+}
 template <int D>
 bool is_minimisation(const ContactSolver<D>& s) {
   return dynamic_cast<const MinimisationSolver<D>*>(&s) != nullptr;
@@ -100,7 +106,7 @@ void picks_round() {
   for (int i = 0; i < D; ++i) f[i] = Body<D>::sphere(spheres[i].pose.position, 1.0, i);
   EXPECT_TRUE(is_analytic<D>(reg.pick(f, plain_sphere<D>(1.0))));
 
-  // Clusters with spheres and walls: the ball wrapper, mobile or fixed; with an ellipsoid: minimisation.
+  // Clusters with spheres and walls: the ball wrapper, mobile or fixed; with an ellipsoid: gap Newton.
   std::vector<Ball<D>> members(2);
   members[1].center[0] = 1.0;
   members[0].radius = members[1].radius = 0.6;
@@ -116,14 +122,14 @@ void picks_round() {
   EXPECT_TRUE(is_ball_wrapper<D>(reg.pick(f, sphere_mobile)));
   EXPECT_TRUE(is_ball_wrapper<D>(reg.pick(f, plain_sphere<D>(1.0))));
   f[D - 1] = Body<D>::of_particle(ellipsoids[D - 1], D - 1);
-  EXPECT_TRUE(is_minimisation<D>(reg.pick(f, cluster_mobile)));  // no solver takes ellipsoid and cluster
+  EXPECT_TRUE(is_gap_newton<D>(reg.pick(f, cluster_mobile)));  // no closed form takes ellipsoid and cluster
   EXPECT_TRUE(is_ellipsoid_solver<D>(reg.pick(f, sphere_mobile)));
 }
 
 TEST(SolverRegistry, Picks2D) { picks_round<2>(); }
 
 // 2D stadiums and polygons, with disks, clusters and walls: the polygon wrapper; with an ellipse
-// (no rounded cores): minimisation.
+// (no rounded cores): gap Newton.
 TEST(SolverRegistry, PicksThePolygonWrapperIn2D) {
   NarrowPhase<2> np;
   const SolverRegistry<2> reg(np, MinimisationOptions{});
@@ -138,9 +144,26 @@ TEST(SolverRegistry, PicksThePolygonWrapperIn2D) {
   f[1] = Body<2>::of_wall(wall);
   EXPECT_TRUE(is_polygon_wrapper(reg.pick(f, Mobile<2>::of_shape(capsule, Mat<2>::Identity()))));
   f[1] = Body<2>::of_particle(e, 2);
-  EXPECT_TRUE(is_minimisation<2>(reg.pick(f, Mobile<2>::of_shape(capsule, Mat<2>::Identity()))));
+  EXPECT_TRUE(is_gap_newton<2>(reg.pick(f, Mobile<2>::of_shape(capsule, Mat<2>::Identity()))));
 }
 TEST(SolverRegistry, Picks3D) { picks_round<3>(); }
+
+/// A shape of a kind no solver is registered for (a family added without solvers): only its
+/// kind is read by the registry.
+template <int D>
+struct UnregisteredShape final : Shape<D> {
+  const char* kind() const override { return "unregistered"; }
+  double measure() const override { return 1.0; }
+  double bounding_radius() const override { return 0.5; }
+  double inscribed_radius() const override { return 0.5; }
+  Vec<D> support(const Vec<D>& u) const override { return 0.5 * u.normalized(); }
+  bool contains(const Vec<D>& x) const override { return x.norm() <= 0.5; }
+  std::vector<Ball<D>> hull_balls() const override { return {Ball<D>{Vec<D>::Zero(), 0.5}}; }
+  SurfaceMesh<D> surface(int) const override { return {}; }
+  std::vector<FclPart<D>> fcl_parts() const override { return {}; }
+  ShapePtr<D> scaled(double) const override { return std::make_shared<UnregisteredShape>(); }
+  std::string definition_json() const override { return "{}"; }
+};
 
 template <int D>
 void override_round() {
@@ -184,7 +207,8 @@ void override_round() {
   reg.add_pair(kPlaneWall, "sphere", other);  // now it covers both
   EXPECT_EQ(&reg.pick(f, sphere_mobile), other.get());
 
-  // A new default: what no registered solver covers (a cluster against an ellipsoid).
+  // A new default: what no registered solver covers (a kind no solver is registered for: a
+  // cluster against such a body; against an ellipsoid, the gap Newton solver).
   auto fallback = std::make_shared<CountingSolver<D>>();
   reg.set_default(fallback);
   EXPECT_EQ(&reg.default_solver(), fallback.get());
@@ -193,6 +217,9 @@ void override_round() {
   members[1].center[0] = 1.0;
   members[0].radius = members[1].radius = 0.6;
   const Mobile<D> cluster_mobile = Mobile<D>::of_shape(std::make_shared<ClusterShape<D>>(members), Mat<D>::Identity());
+  EXPECT_TRUE(is_gap_newton<D>(reg.pick(f, cluster_mobile)));
+  const Particle<D> odd = particle<D>(std::make_shared<UnregisteredShape<D>>(), spheres[D - 1].pose.position);
+  f[D - 1] = Body<D>::of_particle(odd, D - 1);
   EXPECT_EQ(&reg.pick(f, cluster_mobile), fallback.get());
 }
 
@@ -200,14 +227,14 @@ TEST(SolverRegistry, OverridesAPair2D) { override_round<2>(); }
 TEST(SolverRegistry, OverridesAPair3D) { override_round<3>(); }
 
 /// End to end: the picked solver solves a wall + spheres problem (analytic), a wall + spheres
-/// problem of an ellipsoid (the ellipsoid solver) and one with a cluster too (minimisation), and
+/// problem of an ellipsoid (the ellipsoid solver) and one with a cluster too (gap Newton), and
 /// every position passes the independent check.
 template <int D>
 void solves_round(std::uint64_t seed) {
   NarrowPhase<D> np;
   const SolverRegistry<D> reg(np, MinimisationOptions{});
   Rng rng(seed);
-  int analytic = 0, smooth = 0, minimisation = 0, positions = 0;
+  int analytic = 0, smooth = 0, newton = 0, positions = 0;
   for (int t = 0; t < 30; ++t) {
     std::array<Kind, D> kinds;
     kinds.fill(Kind::Sphere);
@@ -219,10 +246,10 @@ void solves_round(std::uint64_t seed) {
     const ContactSolver<D>& s = reg.pick(pb.span(), pb.mobile());
     EXPECT_EQ(is_analytic<D>(s), !ellipsoid);
     EXPECT_EQ(is_ellipsoid_solver<D>(s), ellipsoid && !cluster);
-    EXPECT_EQ(is_minimisation<D>(s), cluster);
+    EXPECT_EQ(is_gap_newton<D>(s), cluster);
     analytic += is_analytic<D>(s);
     smooth += is_ellipsoid_solver<D>(s);
-    minimisation += is_minimisation<D>(s);
+    newton += is_gap_newton<D>(s);
     std::array<Placement<D>, ContactSolver<D>::kMaxSolutions> out;
     const int n = s.solve(pb.span(), pb.mobile(), out);
     positions += n;
@@ -231,7 +258,7 @@ void solves_round(std::uint64_t seed) {
   }
   EXPECT_GT(analytic, 5);
   EXPECT_GT(smooth, 5);
-  EXPECT_GT(minimisation, 5);
+  EXPECT_GT(newton, 5);
   EXPECT_GT(positions, 30);
 }
 
