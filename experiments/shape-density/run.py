@@ -10,7 +10,7 @@ of the walls, coordination, the orientation tests' smallest p and the nematic or
 validation's verdict; the rate is particles per CPU-second of the whole process (user + system
 time of the child, so the analysis and the output are in it) and per second of packing.
 
-    FRONTPACK=build/cli/frontpack /usr/bin/python3 experiments/shape-density/run.py [all|families|sweeps|mixture|report]
+    FRONTPACK=build/cli/frontpack /usr/bin/python3 experiments/shape-density/run.py [all|families|sweeps|mixture|report] [FAMILY,...]
 
 results.json keeps every run (a rerun of one part replaces its rows); `report` (also run after
 each part) writes RESULTS.md's measured tables and the figures rate_vs_core.png, aspect_ratio.png.
@@ -59,7 +59,10 @@ LEVERS = {
     "roll 60 (default)": {"roll_steps": 60, "orientation_trials": 1},
     "roll 60, trials 2": {"roll_steps": 60, "orientation_trials": 2},
     "roll 60, trials 4": {"roll_steps": 60, "orientation_trials": 4},
+    "roll 60, trials 2 face to face": {"roll_steps": 60, "orientation_trials": 2, "face_to_face": "true"},
 }
+# The face-to-face trials apply to polytopes only.
+POLYTOPES = {"cube", "tetrahedron", "icosahedron", "square", "hexagon"}
 # The aspect-ratio sweeps (default lever): prolate spheroids [a, 1, 1] and capsules by L/D.
 SPHEROIDS = [1.0, 1.25, 1.5, 2.0, 3.0]
 CAPSULES = [0.25, 0.5, 1.0, 2.0, 3.0]
@@ -108,12 +111,14 @@ def run(name, text, **info):
     return row
 
 
-def families():
+def families(only=None):
     rows = []
     for family, spec in FAMILIES.items():
+        if only and family not in only:
+            continue
         dimension, shape, _ = spec[:3]
         cap = spec[3] if len(spec) > 3 else None
-        levers = ["plain", "roll 60 (default)"] if cap else LEVERS  # capped families: the two that matter
+        levers = ["plain", "roll 60 (default)"] if cap else [l for l in LEVERS if "face" not in l or family in POLYTOPES]
         seeds = SEEDS[:1] if cap else SEEDS
         for lever in levers:
             for seed in seeds:
@@ -250,7 +255,7 @@ def report(rows):
             ax.set_yscale("log")
             ax.set_xlabel("core solid fraction (dotted: the family's reference)")
             ax.set_ylabel("particles per CPU-second (whole run)")
-            ax.set_title(f"{dimension}D: levers plain -> roll -> trials 2 -> trials 4")
+            ax.set_title(f"{dimension}D: levers plain -> roll -> trials 2 -> trials 4 (-> face to face)")
             ax.grid(alpha=0.3)
             ax.legend(fontsize=7)
         fig.tight_layout()
@@ -264,13 +269,15 @@ def report(rows):
 
 def main():
     part = sys.argv[1] if len(sys.argv) > 1 else "all"
+    only = set(sys.argv[2].split(",")) if len(sys.argv) > 2 else None  # families: a subset (comma-separated names)
     rows = json.loads(RESULTS.read_text())["rows"] if RESULTS.exists() else []
     parts = {"families": families, "sweeps": sweeps, "mixture": mixture}
     todo = list(parts) if part == "all" else [] if part == "report" else [part]
     for p in todo:
-        new = parts[p]()
-        rows = [r for r in rows if r["part"] != p] + new
-        RESULTS.write_text(json.dumps({"provenance": runkit.provenance_lines(runkit.FRONTPACK, sys.argv), "rows": rows}, indent=1))
+        new = parts[p](only) if p == "families" else parts[p]()
+        replaced = {(r["family"], r["lever"]) for r in new} if p == "families" and only else None
+        rows = [r for r in rows if r["part"] != p or (replaced is not None and (r["family"], r["lever"]) not in replaced)] + new
+        RESULTS.write_text(json.dumps({"provenance": runkit.provenance_lines(runkit.FRONTPACK, sys.argv), "rows": rows}))
     report(rows)
 
 
