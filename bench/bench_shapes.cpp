@@ -1,5 +1,5 @@
 // The general-shape machinery: narrow-phase gaps (analytic capsule and ellipsoid paths, the exact
-// convex polygon path, FCL polytope path), one capsule contact problem, by minimisation (per
+// convex polygon and polytope-sphere paths, FCL polytope path), one capsule contact problem, by minimisation (per
 // algorithm) and by the gap Newton solver, and one hexagon contact problem by the polygon wrapper.
 // A separate executable: frontpack_bench (spheres) must link no FCL and no NLopt.
 #include <benchmark/benchmark.h>
@@ -13,6 +13,7 @@
 #include "core/sampling/rng.hpp"
 #include "shapes/shape_registry.hpp"
 #include "shapes/ellipsoid_shape.hpp"
+#include "shapes/sphere_shape.hpp"
 #include "shapes/spherocylinder_shape.hpp"
 
 namespace {
@@ -69,6 +70,17 @@ void BM_GapPolyhedronFcl(benchmark::State& state) {
   gap_loop(state, ps);
 }
 BENCHMARK(BM_GapPolyhedronFcl)->Arg(15)->Arg(60);
+
+/// Icosahedra against spheres of the same circumscribed radius, alternately: the exact
+/// polytope-ball gap (face planes inside, nearest facet point outside; FCL's GJK before it).
+void BM_GapPolyhedronSphere(benchmark::State& state) {
+  const double side = static_cast<double>(state.range(0)) / 10.0;
+  auto ps = scatter(icosahedron(), 1024, side, 4);
+  const auto ball = std::make_shared<SphereShape<3>>(1.0);
+  for (std::size_t k = 1; k < ps.size(); k += 2) ps[k].shape = ball;
+  gap_loop(state, ps);
+}
+BENCHMARK(BM_GapPolyhedronSphere)->Arg(15)->Arg(60);
 
 /// Ellipsoids [1, 0.7, 0.5] (contact/ellipsoid_gap.hpp: Newton on the support functions); the
 /// cube side sets the overlapping share (15: most pairs overlap, 60: most are apart).
