@@ -63,7 +63,10 @@ PackCheck pack_check_of(const PackingAnalysis& a) {
   const char* axis_names[] = {"x", "y", "z"};
   for (std::size_t k = 0; k < a.reference_center.size() && k < 3; ++k)
     c.metrics.emplace_back(std::string("reference_sphere_center_") + axis_names[k], a.reference_center[k]);
-  if (a.orientation) c.metrics.emplace_back("orientation_order", a.orientation_order);
+  if (a.orientation) {
+    c.metrics.emplace_back("orientation_order", a.orientation_order);
+    c.metrics.emplace_back("orientation_radial_order", a.radial_order);
+  }
   // The smallest p of the orientation tests, and the order about the law's axis, per template.
   for (std::size_t t = 0; t < c.validation.orientations.size(); ++t) {
     const OrientationFit& f = c.validation.orientations[t];

@@ -11,7 +11,8 @@
 //  * ShapeModel (front/shape_model.hpp): shapes and poses, each pair sent to the contact solver
 //    the registry picks for the kinds involved (paper 004: wrappers, minimisation).
 // What a model provides: the public members of front/sphere_model.hpp, the smallest model (the
-// manager uses every one of them).
+// manager uses every one of them); a model whose drafts turn (kTurns: shapes) also the members of
+// front/shape_model.hpp's orientation section (orientation trials and the roll).
 // Differences from the paper, each an option measured in experiments/front-levers/RESULTS.md,
 // the same for every shape:
 //  * walls are bodies (PackerOptions::walls_as_bodies): near the boundary the walls within
@@ -24,7 +25,10 @@
 //  * with a pool, whether the smallest draft is tried first as a probe (s0 dropped if it fails);
 //  * a pool of drafts drawn ahead: a draft that does not fit at s0 waits while the others are
 //    tried; every drawn draft is placed except the pool's last few, so the size distribution
-//    is not distorted (no particle is ever shrunk or discarded to make it fit).
+//    is not distorted (no particle is ever shrunk or discarded to make it fit);
+//  * non-spherical particles: the orientation is chosen within the template's law (trials drawn
+//    from it, then the roll into the pocket; experiments/shape-density/RESULTS.md). The probe of
+//    probe_smallest keeps the smallest draft's orientation as drawn.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -489,7 +493,11 @@ class AdvancingFront {
         found = true;
       }
       model_.set_orientation(d, kept);
-      if (found && !keep_first && opt_.roll_steps > 0 && model_.may_roll(d)) roll(d, s0, best, res);
+      // Not in a block (threads): its growth is a plane's sweep, and rolling down it lays
+      // elongated particles across one direction (13,548 capsules grown in 2 blocks: their axes'
+      // azimuth failed the orientation test, p = 4e-40, rolled towards s0 as well as along the
+      // plane's key; the single front's seed point turns around the cluster: they pass).
+      if (found && !keep_first && !block_ && opt_.roll_steps > 0 && model_.may_roll(d)) roll(d, best, res);
       return found;
     }
   }
@@ -503,8 +511,7 @@ class AdvancingFront {
   /// overlap allowance is a tenth of the scan's (a roll pushes against that fourth body: with the
   /// scan's it ends inside it by the whole tolerance). The angle grows after a kept turn and
   /// shrinks after a refused one; the roll ends after roll_steps turns or below kMinRollAngle.
-  void roll(Draft& d, int s0, Found& best, Result& res) {
-    (void)s0;
+  void roll(Draft& d, Found& best, Result& res) {
     auto kept = model_.orientation(d);
     double angle = kRollAngle;
     std::array<Placement<D>, Model::kMaxPlacements> out;

@@ -169,7 +169,11 @@ std::string analysis_json(const PackingAnalysis& a, bool include_timings) {
                   {"r", g.r},
                   {"g", g.g}};
   if (a.orientation)
-    j["orientation"] = Json{{"axis", "body x"}, {"tensor", fabric_json(*a.orientation, a.dimension)}, {"order", a.orientation_order}};
+    j["orientation"] = Json{{"axis", "body x"},
+                            {"tensor", fabric_json(*a.orientation, a.dimension)},
+                            {"order", a.orientation_order},
+                            {"radial_order", a.radial_order},
+                            {"radial_order_noise", a.radial_order_noise}};
   j["validation"] = a.validation ? validation_json(*a.validation) : Json(nullptr);
   if (include_timings) {
     j["timings"] = Json::object();

@@ -114,6 +114,8 @@ std::string PackingAnalysis::summary() const {
   if (orientation) {
     line("orientation order    S = %.4f (body x axes; 0 isotropic, 1 parallel)", orientation_order);
     eigen("orientation tensor  ", *orientation);
+    line("radial order         %.4f (axes against the direction from the reference centre; isotropic 0 +- %.4f, "
+         "> 0 radial, < 0 tangential)", radial_order, radial_order_noise);
   }
   if (validation) {
     s += '\n';

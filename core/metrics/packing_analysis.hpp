@@ -95,6 +95,13 @@ struct PackingAnalysis {
   /// orientations (to ~1/sqrt(N)), 1 for parallel axes.
   std::optional<FabricTensor> orientation;
   double orientation_order = 0.0;
+  /// Shapes: the body axes against the direction from the reference centre (the container's
+  /// interior point, where the front grows from by default): 3D <P2(a.r)>, 2D <cos 2 psi_r>,
+  /// over the particles more than r_max from it; 0 without such a texture (within
+  /// radial_order_noise, the standard deviation of an isotropic sample's mean), > 0 axes along
+  /// the radius, < 0 across it (an onion). The marginal orientation tests cannot see it.
+  double radial_order = 0.0;
+  double radial_order_noise = 0.0;
   std::optional<ValidationReport> validation;
   std::vector<std::pair<std::string, double>> timings;  ///< seconds per part (not deterministic)
 

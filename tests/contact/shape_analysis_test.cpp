@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -111,6 +113,34 @@ TEST(ShapeAnalysis, OrientationAndEquivalentRadius) {
   EXPECT_NEAR(4.0 / 3.0 * std::numbers::pi * std::pow(a.r_max, 3), volume, 1e-12 * volume);
   ASSERT_EQ(a.templates.size(), 1u);
   EXPECT_EQ(a.templates[0].second, 20u);
+}
+
+// The radial order: capsules pointing at the box's centre give 1, capsules across the radius
+// (axes along z, in the plane z = centre) -1/2, and the marginal order cannot tell the second
+// from a random set.
+TEST(ShapeAnalysis, RadialOrderSeesAnOnion) {
+  const BoxContainer<3> box(Vec3::Zero(), Vec3::Constant(20.0));
+  const Vec3 centre = box.interior_point();
+  auto ring = [&](bool radial) {
+    ShapePacking<3> p;
+    p.template_names = {"spherocylinder"};
+    for (int k = 0; k < 24; ++k) {
+      const double phi = 2 * std::numbers::pi * k / 24;
+      const Vec3 u(std::cos(phi), std::sin(phi), 0.0);
+      Particle<3> q;
+      q.shape = std::make_shared<SpherocylinderShape<3>>(0.25, 0.2);
+      q.pose.position = centre + 6.0 * u;
+      // Body x along u (radial) or along z (tangential: across the radius).
+      q.pose.rotation = radial ? Eigen::Matrix3d(Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), u))
+                               : Eigen::Matrix3d(Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), Vec3::UnitZ()));
+      p.particles.push_back(q);
+    }
+    return analyze_shape_packing<3>(p, box, {}, {"spherocylinder"});
+  };
+  const PackingAnalysis out = ring(true), across = ring(false);
+  EXPECT_NEAR(out.radial_order, 1.0, 1e-12);
+  EXPECT_NEAR(across.radial_order, -0.5, 1e-12);
+  EXPECT_NEAR(out.radial_order_noise, std::sqrt(0.2 / 24), 1e-12);
 }
 
 }  // namespace

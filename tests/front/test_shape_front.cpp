@@ -629,6 +629,14 @@ TEST(ShapeFrontOrientation, RollAndTrialsPackDenserAndValid) {
     EXPECT_GT(rolled.res.solid_measure, 1.03 * plain.res.solid_measure);
     EXPECT_GT(both.res.solid_measure, 1.03 * plain.res.solid_measure);
   }
+  // Grown in blocks (threads), a front does not roll: a block's growth is a plane's sweep, and
+  // rolling down it would lay elongated particles across one direction.
+  const PackRun<3> blocks = pack_run<3>(kFamilies3.at("spherocylinder"), setup, 100000, 3, [](fp::PackerOptions& o) {
+    o.block_edge = 3.5;
+  });
+  EXPECT_GT(blocks.res.counters.blocks, 0u);
+  EXPECT_EQ(blocks.res.counters.roll_turns, 0u);
+  EXPECT_GT(blocks.res.packing.size(), 100u);
 }
 
 TEST(ShapeFrontDistributions, SizeOnANamedDimension) {
