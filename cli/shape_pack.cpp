@@ -96,7 +96,7 @@ PackCheck ShapePack<D>::check(const Scene& scene, const Result& res, CheckDepth 
   c.info.emplace_back("contact_solver", scene.packer.contact_solver == ContactSolverChoice::Auto ? "auto" : "minimisation");
   char buf[480];
   std::snprintf(buf, sizeof buf,
-                "  solver         %llu solves: %llu in closed form (wrappers, spheres), the others by minimisation (%s): "
+                "  solver         %llu solves: %llu in closed form or by Newton (wrappers, spheres, gap Newton), the others by minimisation (%s): "
                 "%llu minimisations, %llu gap evaluations; %llu FCL queries\n",
                 static_cast<unsigned long long>(res.counters.solves), static_cast<unsigned long long>(s.analytic_solves),
                 scene.packer.minimisation.algorithm.c_str(), static_cast<unsigned long long>(s.minimisations),

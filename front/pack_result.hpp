@@ -81,7 +81,7 @@ struct FrontCounters {
 /// Where the contact solves of non-spherical particles went (all zero for spheres, whose analytic
 /// solver is inlined in the front and counted by FrontCounters::solves alone).
 struct SolverCounters {
-  std::uint64_t analytic_solves = 0;       ///< solves the registry sent to a closed-form solver (wrappers, spheres)
+  std::uint64_t analytic_solves = 0;       ///< solves the registry sent to any solver but minimisation (wrappers, spheres, gap Newton)
   std::uint64_t minimisation_solves = 0;   ///< solves sent to the minimisation solver
   std::uint64_t minimisations = 0;         ///< NLopt runs (two or more per minimisation solve)
   std::uint64_t gap_evaluations = 0;       ///< gap-vector evaluations by the minimisation solver
