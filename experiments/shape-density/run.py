@@ -13,7 +13,8 @@ time of the child, so the analysis and the output are in it) and per second of p
     FRONTPACK=build/cli/frontpack /usr/bin/python3 experiments/shape-density/run.py [all|families|sweeps|mixture|report] [FAMILY,...]
 
 results.json keeps every run (a rerun of one part replaces its rows); `report` (also run after
-each part) writes RESULTS.md's measured tables and the figures rate_vs_core.png, aspect_ratio.png.
+each part) writes RESULTS.md's measured tables and the figures rate_vs_core.png, aspect_ratio.png,
+wall_layers.png.
 """
 import fcntl
 import json
@@ -260,6 +261,27 @@ def report(rows):
             ax.legend(fontsize=7)
         fig.tight_layout()
         fig.savefig(HERE / "rate_vs_core.png", dpi=110)
+        plt.close(fig)
+
+    if fam:
+        # The wall layers of every family with the defaults (seed 1): the profile from the walls.
+        fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
+        for ax, dimension in zip(axes, (3, 2)):
+            for k, (family, spec) in enumerate(f for f in FAMILIES.items() if f[1][0] == dimension):
+                g = [r for r in fam if r["family"] == family and r["lever"] == "roll 60 (default)" and r["seed"] == 1]
+                if not g or not g[0].get("wall_profile"):
+                    continue
+                w = g[0]["wall_profile"]
+                style = "o-" if k < 10 else "s--"  # the colour cycle has 10
+                line, = ax.plot([d / (4 * w["width"]) for d in w["distance"]], w["vf"], style, ms=3, label=family)
+                ax.axhline(g[0]["core"], color=line.get_color(), lw=0.6, ls=":")
+            ax.set_xlabel("distance from the walls / r_max (shells of r_max / 4)")
+            ax.set_ylabel("solid fraction in the shell (dotted: the core)")
+            ax.set_title(f"{dimension}D wall layers, defaults (seed 1)")
+            ax.grid(alpha=0.3)
+            ax.legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(HERE / "wall_layers.png", dpi=110)
         plt.close(fig)
 
     text = "\n".join(out) + "\n"
