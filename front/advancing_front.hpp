@@ -26,9 +26,11 @@
 //  * a pool of drafts drawn ahead: a draft that does not fit at s0 waits while the others are
 //    tried; every drawn draft is placed except the pool's last few, so the size distribution
 //    is not distorted (no particle is ever shrunk or discarded to make it fit);
-//  * non-spherical particles: the orientation is chosen within the template's law (trials drawn
-//    from it, then the roll into the pocket; experiments/shape-density/RESULTS.md). The probe of
-//    probe_smallest keeps the smallest draft's orientation as drawn.
+//  * non-spherical particles: the orientation is chosen within the template's law, in the frame
+//    of the radius from the seed point (no texture about it) or the container's (trials, more
+//    orientations tried in the pocket the scan found, then the roll into the pocket;
+//    front/radial_frame.hpp, experiments/shape-density/RESULTS.md). The probe of probe_smallest
+//    keeps the smallest draft's orientation as drawn.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -47,6 +49,7 @@
 #include "core/sampling/rng.hpp"
 #include "front/front_block.hpp"
 #include "front/front_parts.hpp"
+#include "front/radial_frame.hpp"
 #include "front/pack_result.hpp"
 #include "front/sphere_model.hpp"
 
@@ -468,50 +471,146 @@ class AdvancingFront {
   }
 
   /// find_position, for a model whose drafts may turn (Model::kTurns, non-spherical particles):
-  /// over opt_.orientation_trials orientations drawn from the draft's law (the position kept by
-  /// the compactness rule over all of them), then the roll. What fits in a gap depends on the
+  /// over opt_.orientation_trials orientations (the position kept by the compactness rule over
+  /// all of them), then the pocket trials and the roll. What fits in a gap depends on the
   /// orientation far more than on the position (experiments/shape-density). The draft keeps the
-  /// orientation of the position returned.
+  /// orientation of the position returned (a draft not placed keeps its own).
   bool find_oriented_position(Draft& d, int s0, Result& res, Found& best) {
     if constexpr (!Model::kTurns) {
       return find_position(d, s0, res, best);
     } else {
-      const int trials = model_.orientation_trials(d);
+      // Neither the pocket trials nor the roll in a block (threads): its growth is a plane's
+      // sweep, and choosing by it lays elongated particles across one direction (13,548 capsules
+      // grown in 2 blocks: their axes' azimuth failed the orientation test, p = 4e-40). A block's
+      // drafts keep the orientation drawn in the lab frame until placed: the sweep's direction is
+      // the same everywhere, so where a draft goes cannot couple its orientation to it.
       const bool keep_first = opt_.candidate == CandidateChoice::First;
+      const bool choose = !keep_first && !block_;
+      const Mat<D> drawn = model_.orientation(d);
+      const bool radial = !block_ && opt_.orientation_frame == OrientationFrame::Radial && model_.isotropic(d);
+      // Radial frame: the draft's drawn orientation is read relative to s0's radius; trials turn
+      // it about that radius only (3D; 2D: none keeps the angle to it).
+      const Vec<D> r0 = model_.position(s0) - seed_point_;
+      const int trials = radial && D == 2 ? 1 : model_.orientation_trials(d);
       bool found = false;
-      auto kept = model_.orientation(d);
+      Mat<D> kept = drawn;
+      double kept_turn = 0;
       for (int t = 0; t < trials && !(found && keep_first); ++t) {
-        if (t > 0) {
+        double turn = 0;
+        if (radial) {
+          if (t > 0) turn = 2 * kPi * rng_.uniform01();
+          model_.set_orientation(d, at_radius<D>(r0, turn, drawn));
+        } else if (t > 0) {
           model_.redraw_orientation(d, rng_);
-          ++res.counters.orientation_draws;
         }
+        if (t > 0) ++res.counters.orientation_draws;
         Found f;
         if (!find_position(d, s0, res, f)) continue;
         if (found && (f.rank > best.rank || (f.rank == best.rank && f.key >= best.key))) continue;
         best = f;
         kept = model_.orientation(d);
+        kept_turn = turn;
         found = true;
       }
+      if (!found) {
+        model_.set_orientation(d, drawn);
+        return false;
+      }
       model_.set_orientation(d, kept);
-      // Not in a block (threads): its growth is a plane's sweep, and rolling down it lays
-      // elongated particles across one direction (13,548 capsules grown in 2 blocks: their axes'
-      // azimuth failed the orientation test, p = 4e-40, rolled towards s0 as well as along the
-      // plane's key; the single front's seed point turns around the cluster: they pass).
-      if (found && !keep_first && !block_ && opt_.roll_steps > 0 && model_.may_roll(d)) roll(d, best, res);
-      return found;
+      // Radial frame: until the orientation is set relative to the position's own radius, any
+      // solution of the pocket trials replaces the scan's, farther or not.
+      bool unframed = radial && !reframe(d, best, drawn, kept_turn, res);
+      if (choose && model_.pocket_trials(d) > 0 && !(radial && D == 2))
+        pocket_trials(d, best, radial ? &drawn : nullptr, unframed, res);
+      if (unframed) ++res.counters.reframe_misses;
+      if (choose && opt_.roll_steps > 0 && model_.may_roll(d) && !(radial && D == 2)) roll(d, best, radial, res);
+      return true;
     }
   }
 
+  /// Radial frame: the scan placed the draft relative to s0's radius, but the radius that counts
+  /// is its own position's, which the scan's choice of the side of s0 couples to the orientation
+  /// (capsules: <P2(a.r)> +0.17 without it). The orientation is set again relative to the
+  /// position's radius (the same turn about it) and the same pocket solved again; the solution
+  /// nearest the scan's is taken even if farther from the seed point. False if none passes the
+  /// checks: the scan's is kept.
+  bool reframe(Draft& d, Found& best, const Mat<D>& drawn, double turn, Result& res) {
+    const Mat<D> scanned = model_.orientation(d);
+    std::array<Placement<D>, Model::kMaxPlacements> out;
+    model_.begin_roll();
+    model_.set_orientation(d, at_radius<D>(best.position - seed_point_, turn, drawn));
+    model_.orient(d);
+    ++res.counters.solves;
+    const int m = model_.solve(best.i, best.j, std::span<Placement<D>>(out.data(), out.size()));
+    int q = -1;
+    for (int c = 0; c < m; ++c) {
+      const Vec<D>& x = out[c].position;
+      if (off_face(d, x, best.i, best.j, best.rank) || rejection(d, x, best.rank, kRollAllowance) != Rejection::None) continue;
+      if (q < 0 || (x - best.position).squaredNorm() < (out[q].position - best.position).squaredNorm()) q = c;
+    }
+    if (q >= 0) {
+      best.position = out[q].position;
+      best.key = growth_key(best.position);
+    } else {
+      model_.set_orientation(d, scanned);
+    }
+    model_.orient(d);
+    return q >= 0;
+  }
+
+  /// The pocket trials (non-spherical particles, isotropic law): once the scan has found the
+  /// pocket (s0 and the bodies i, j of the position kept), other orientations are tried in that
+  /// pocket only: the same contact problem solved again at each, and a solution closer to the
+  /// seed point that passes the scan's checks is kept with its orientation. What fits a pocket
+  /// depends on the orientation far more than on the position, and a trial costs one solve, not a
+  /// whole scan as an orientation trial does. Lab frame (relative == nullptr): orientations drawn
+  /// from the law; radial frame: the drawn orientation `relative` turned about the position's
+  /// radius by a random angle (the relation to the radius stays the law's). With `unframed`
+  /// (radial frame, the reframe found no room), the first solution that passes the checks is
+  /// taken wherever it lies, and unframed cleared.
+  void pocket_trials(Draft& d, Found& best, const Mat<D>* relative, bool& unframed, Result& res) {
+    Mat<D> kept = model_.orientation(d);
+    const Vec<D> radius = best.position - seed_point_;
+    std::array<Placement<D>, Model::kMaxPlacements> out;
+    model_.begin_roll();
+    for (int t = model_.pocket_trials(d); t > 0; --t) {
+      ++res.counters.pocket_draws;
+      ++res.counters.solves;
+      if (relative) model_.set_orientation(d, at_radius<D>(radius, 2 * kPi * rng_.uniform01(), *relative));
+      else model_.redraw_orientation(d, rng_);
+      model_.orient(d);
+      const int m = model_.solve(best.i, best.j, std::span<Placement<D>>(out.data(), out.size()));
+      bool better = false;
+      for (int c = 0; c < m; ++c) {
+        const Vec<D>& x = out[c].position;
+        if ((unframed || growth_key(x) < best.key) && !off_face(d, x, best.i, best.j, best.rank) &&
+            rejection(d, x, best.rank, kRollAllowance) == Rejection::None) {
+          best.position = x;
+          best.key = growth_key(x);
+          better = true;
+          unframed = false;
+        }
+      }
+      if (better) {
+        kept = model_.orientation(d);
+        ++res.counters.pocket_kept;
+      }
+    }
+    model_.set_orientation(d, kept);
+    model_.orient(d);
+  }
+
   /// The roll (non-spherical particles): the draft just positioned turns by small random
-  /// rotations within its law (model_.turn: about any axis for an isotropic law, about its own
-  /// axis for a law about an axis) while touching s0 and the same bodies: their contact problem is
-  /// solved again at each orientation and the solution nearest to the last kept one followed. A
-  /// turn that brings it closer to the seed point and passes the scan's checks is kept: the
-  /// particle rolls or slides into the pocket its bodies form, until a fourth body stops it. The
-  /// overlap allowance is a tenth of the scan's (a roll pushes against that fourth body: with the
-  /// scan's it ends inside it by the whole tolerance). The angle grows after a kept turn and
-  /// shrinks after a refused one; the roll ends after roll_steps turns or below kMinRollAngle.
-  void roll(Draft& d, Found& best, Result& res) {
+  /// rotations within its law (lab frame, model_.turn: about any axis for an isotropic law, about
+  /// its own axis for a law about an axis; radial frame: about its position's radius) while
+  /// touching s0 and the same bodies: their contact problem is solved again at each orientation
+  /// and the solution nearest to the last kept one followed. A turn that brings it closer to the
+  /// seed point and passes the scan's checks is kept: the particle rolls or slides into the
+  /// pocket its bodies form, until a fourth body stops it. The overlap allowance is a tenth of
+  /// the scan's (a roll pushes against that fourth body: with the scan's it ends inside it by the
+  /// whole tolerance). The angle grows after a kept turn and shrinks after a refused one; the
+  /// roll ends after roll_steps turns or below kMinRollAngle.
+  void roll(Draft& d, Found& best, bool radial, Result& res) {
     auto kept = model_.orientation(d);
     double angle = kRollAngle;
     std::array<Placement<D>, Model::kMaxPlacements> out;
@@ -519,7 +618,8 @@ class AdvancingFront {
     for (int t = 0; t < opt_.roll_steps && angle >= kMinRollAngle; ++t) {
       ++res.counters.roll_turns;
       ++res.counters.solves;
-      model_.turn(d, angle, rng_);
+      if (radial) model_.set_orientation(d, about_radius<D>(best.position - seed_point_, angle * rng_.uniform(-1.0, 1.0)) * kept);
+      else model_.turn(d, angle, rng_);
       model_.orient(d);
       const int m = model_.solve(best.i, best.j, std::span<Placement<D>>(out.data(), out.size()));
       int q = -1;

@@ -35,6 +35,9 @@ struct FrontCounters {
   std::uint64_t blocks = 0;               ///< threads: blocks the container was cut into (0: one front)
   std::uint64_t trimmed = 0;              ///< threads: particles placed, then dropped to honour a count or fraction stop
   std::uint64_t orientation_draws = 0;    ///< shapes: orientations drawn beyond the first (orientation_trials)
+  std::uint64_t reframe_misses = 0;       ///< shapes, radial frame: placements left in s0's frame (no room in their own)
+  std::uint64_t pocket_draws = 0;         ///< shapes: orientations drawn by the pocket trials
+  std::uint64_t pocket_kept = 0;          ///< shapes: pocket trials kept (closer to the seed point)
   std::uint64_t roll_turns = 0;           ///< shapes: turns the roll tried
   std::uint64_t roll_kept = 0;            ///< shapes: turns the roll kept
 
@@ -66,6 +69,9 @@ struct FrontCounters {
       {"blocks", &FrontCounters::blocks},
       {"trimmed", &FrontCounters::trimmed},
       {"orientation_draws", &FrontCounters::orientation_draws},
+      {"reframe_misses", &FrontCounters::reframe_misses},
+      {"pocket_draws", &FrontCounters::pocket_draws},
+      {"pocket_kept", &FrontCounters::pocket_kept},
       {"roll_turns", &FrontCounters::roll_turns},
       {"roll_kept", &FrontCounters::roll_kept}};
 

@@ -26,6 +26,12 @@ enum class PairOrder { Index, NearestFirst };
 /// Which neighbours of s0 a new particle may be placed tangent to: all of V (paper 002), or only
 /// those still in the front F. A closed particle is still an obstacle in both cases.
 enum class ContactBodies { All, Front };
+/// Non-spherical particles under the isotropic law: the frame their orientation is drawn in and
+/// chosen in. Radial: relative to the radius from the seed point, the choices (trials, pocket
+/// trials, roll) turning only about that radius, so that no texture about the seed point forms.
+/// Lab: in the container's frame, turned about any axis (denser; elongated particles then lie
+/// across the radius).
+enum class OrientationFrame { Radial, Lab };
 
 /// Widest size ratio for which probe_smallest is on by default (measured: experiments/front-levers).
 inline constexpr double kProbeRatioLimit = 8.0;
@@ -119,6 +125,12 @@ struct PackerOptions {
   /// Non-spherical particles: orientation trials beyond the first turn a face of a polytope
   /// against one of s0's (isotropic laws; other shapes draw from their law).
   bool face_to_face = false;
+  /// Non-spherical particles under the isotropic law: orientations drawn per placement in the
+  /// pocket the scan found (its contact problem solved again at each), the one closest to the
+  /// seed point kept (0: none). In the radial frame they turn the particle about the radius only.
+  int pocket_trials = 32;
+  /// Non-spherical particles under the isotropic law: the frame of the orientation's choice.
+  OrientationFrame orientation_frame = OrientationFrame::Radial;
   /// Non-spherical particles: turns tried per placement by the roll, which turns the particle
   /// within its law while it touches the same bodies, towards the seed point (0: no roll).
   int roll_steps = 60;

@@ -382,14 +382,25 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
                  "grid_cell_factor", "hierarchical_grid_ratio", "seed_point", "minimisation", "contact_solver", "threads", "block_edge",
                  "overlap", "z_min", "loose", "fallback_r_min", "mesh_edge", "random_tries", "near_tries",
                  "two_contact_tries", "nuclei", "pairs_per_nucleus", "reshapes", "order", "voids",
-                 "random_share", "orientation_trials", "roll_steps", "face_to_face"});
+                 "random_share", "orientation_trials", "pocket_trials", "roll_steps", "face_to_face", "orientation_frame"});
   if (auto x = m.find("face_to_face")) {
     if (!shapes)
       x->fail("chooses the orientation of particle templates ('particles: [{shape: ..., size: ...}]'); this scene has "
               "spheres ('particles: {radius: ...}'), which have none");
     p.face_to_face = x->boolean();
   }
+  if (auto x = m.find("orientation_frame")) {
+    if (!shapes)
+      x->fail("chooses the orientation of particle templates ('particles: [{shape: ..., size: ...}]'); this scene has "
+              "spheres ('particles: {radius: ...}'), which have none");
+    p.orientation_frame = x->choice({"radial", "lab"}) == "radial" ? OrientationFrame::Radial : OrientationFrame::Lab;
+  }
+  if (p.face_to_face && p.orientation_frame == OrientationFrame::Radial)
+    m.find("face_to_face")->fail("turns a face of the particle against one of s0's, which the radial orientation frame (the "
+                                 "default: orientations relative to the radius from the seed point) does not allow; add "
+                                 "'orientation_frame: lab'");
   const std::pair<const char*, int PackerOptions::*> orientation_keys[] = {{"orientation_trials", &PackerOptions::orientation_trials},
+                                                                           {"pocket_trials", &PackerOptions::pocket_trials},
                                                                            {"roll_steps", &PackerOptions::roll_steps}};
   for (const auto& [key, member] : orientation_keys)
     if (auto x = m.find(key)) {

@@ -11,6 +11,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <tuple>
 
 #include "contact/shape_validation.hpp"
 #include "core/geometry/box_container.hpp"
@@ -557,9 +558,10 @@ TEST(ShapeFrontDistributions, FixedOrientationIsExact) {
 }
 
 // Laws about an axis are kept by the packing, with the roll (which turns a particle about its own
-// axis only) and orientation trials (drawn from the law) on: the library's orientation tests pass,
-// the sample's nematic order about the axis is the law's within its noise, and the same particles
-// fail the test against the isotropic law (the test sees what differs).
+// axis only) and orientation trials (drawn from the law) on, and pocket trials asked for (which
+// such a law refuses): the library's orientation tests pass, the sample's nematic order about the
+// axis is the law's within its noise, and the same particles fail the test against the isotropic
+// law (the test sees what differs).
 TEST(ShapeFrontOrientation, LawsAboutAnAxisAreKept) {
   auto box = [](double side) {
     PackSetup<3> s;
@@ -572,10 +574,14 @@ TEST(ShapeFrontOrientation, LawsAboutAnAxisAreKept) {
   for (const char* law : {"{law: watson, axis: [0, 0, 1], kappa: 6}", "{law: fisher, axis: [1, 1, 0], order: 0.5}"}) {
     SCOPED_TRACE(law);
     const PackRun<3> run = pack_run<3>(kFamilies3.at("spherocylinder") + "    orientation: " + law + "\n", setup, 200, 5,
-                                       [](fp::PackerOptions& o) { o.orientation_trials = 2; });
+                                       [](fp::PackerOptions& o) {
+                                         o.orientation_trials = 2;
+                                         o.pocket_trials = 32;
+                                       });
     check_packing<3>(run, setup, 200);
     EXPECT_GT(run.res.counters.roll_kept, 0u);
     EXPECT_GT(run.res.counters.orientation_draws, 0u);
+    EXPECT_EQ(run.res.counters.pocket_draws, 0u);  // they would bias a law about an axis
     const fp::OrientationSpec& spec = run.templates[0].orientation;
     std::vector<fp::Mat<3>> rotations;
     for (const auto& p : run.res.packing.particles) rotations.push_back(p.pose.rotation);
@@ -584,19 +590,26 @@ TEST(ShapeFrontOrientation, LawsAboutAnAxisAreKept) {
     EXPECT_NEAR(fit.order, fit.law_order, 4 * fit.order_noise) << fit.describe();
     EXPECT_FALSE(fp::orientation_fit<3>(rotations, fp::OrientationLaw<3>::isotropic()).passes(1e-4));
   }
-  // 2D: a law about an axis allows no turn (it would change the angle): no roll, the law kept.
+  // 2D: a law about an axis allows no turn (it would change the angle): no roll, no pocket
+  // trials; the law kept.
   PackSetup<2> flat;
   flat.container = std::make_shared<fp::BoxContainer<2>>(Vec2::Zero(), Vec2(10, 10));
   flat.sd = box_distance<2>(Vec2::Zero(), Vec2(10, 10));
   flat.name = "box [0,10]^2";
-  const PackRun<2> run = pack_run<2>(kFamilies2.at("spherocylinder") + "    orientation: {law: watson, axis: [1, 0], kappa: 3}\n", flat, 150, 5);
+  const PackRun<2> run = pack_run<2>(kFamilies2.at("spherocylinder") + "    orientation: {law: watson, axis: [1, 0], kappa: 3}\n", flat, 150, 5,
+                                     [](fp::PackerOptions& o) { o.pocket_trials = 32; });
   check_packing<2>(run, flat, 150);
   EXPECT_EQ(run.res.counters.roll_turns, 0u);
+  EXPECT_EQ(run.res.counters.pocket_draws, 0u);
+  std::vector<fp::Mat<2>> angles;
+  for (const auto& p : run.res.packing.particles) angles.push_back(p.pose.rotation);
+  const fp::OrientationFit fit = fp::orientation_fit<2>(angles, run.templates[0].orientation.law<2>());
+  EXPECT_TRUE(fit.passes(fp::kOrientationAlpha)) << fit.describe();
 }
 
-// The roll and the orientation trials are what the front's density for shapes rests on
-// (experiments/shape-density): each must give a valid packing, and a denser one than without it,
-// for the same drafts (cubes and capsules, a box of ~250 particles).
+// The roll, the orientation trials and the pocket trials are what the front's density for shapes
+// rests on (experiments/shape-density): each must give a valid packing, and a denser one than
+// without it, for the same drafts (cubes and capsules, a box of ~250 particles), in either frame.
 TEST(ShapeFrontOrientation, RollAndTrialsPackDenserAndValid) {
   PackSetup<3> setup;
   setup.container = std::make_shared<fp::BoxContainer<3>>(Vec3::Zero(), Vec3::Constant(3.5));
@@ -606,15 +619,21 @@ TEST(ShapeFrontOrientation, RollAndTrialsPackDenserAndValid) {
     SCOPED_TRACE(family);
     const std::string particles = family == std::string("polyhedron") ? "  - shape: polyhedron\n    preset: cube\n" + kSize
                                                                       : kFamilies3.at(family);
-    auto fill = [&](int roll, int trials) {
+    auto fill = [&](fp::OrientationFrame frame, int roll, int trials, int pocket) {
       // Until the front runs empty: the solid the container takes.
       return pack_run<3>(particles, setup, 100000, 3, [&](fp::PackerOptions& o) {
+        o.orientation_frame = frame;
         o.roll_steps = roll;
         o.orientation_trials = trials;
+        o.pocket_trials = pocket;
       });
     };
-    const PackRun<3> plain = fill(0, 1), rolled = fill(60, 1), both = fill(60, 3);
-    for (const PackRun<3>* run : {&plain, &rolled, &both}) {
+    const auto lab = fp::OrientationFrame::Lab, radial = fp::OrientationFrame::Radial;
+    const PackRun<3> plain = fill(lab, 0, 1, 0), rolled = fill(lab, 60, 1, 0), both = fill(lab, 60, 3, 0),
+                     pocket = fill(lab, 0, 1, 32), pocket_rolled = fill(lab, 60, 1, 32);
+    const PackRun<3> radial_plain = fill(radial, 0, 1, 0), radial_rolled = fill(radial, 60, 1, 0),
+                     radial_both = fill(radial, 60, 3, 32);
+    for (const PackRun<3>* run : {&plain, &rolled, &both, &pocket, &pocket_rolled, &radial_plain, &radial_rolled, &radial_both}) {
       EXPECT_EQ(run->res.stop, fp::StopReason::FrontExhausted);
       PackRun<3> whole = *run;
       // check_packing asks for a count stop: the independent checks of the whole packing.
@@ -624,19 +643,110 @@ TEST(ShapeFrontOrientation, RollAndTrialsPackDenserAndValid) {
     EXPECT_EQ(plain.res.counters.roll_turns, 0u);
     EXPECT_GT(rolled.res.counters.roll_kept, rolled.res.packing.size());  // most placements roll, some several times
     EXPECT_GT(both.res.counters.orientation_draws, 0u);
-    std::printf("  %s: solid %.4f plain, %.4f rolled, %.4f rolled with 3 trials\n", family, plain.res.solid_measure,
-                rolled.res.solid_measure, both.res.solid_measure);
+    EXPECT_EQ(rolled.res.counters.pocket_draws, 0u);
+    EXPECT_GT(pocket.res.counters.pocket_kept, 0u);
+    EXPECT_EQ(pocket.res.counters.roll_turns, 0u);
+    EXPECT_EQ(rolled.res.counters.reframe_misses, 0u);  // the lab frame does not reframe
+    EXPECT_GT(radial_rolled.res.counters.roll_kept, 0u);
+    EXPECT_GT(radial_both.res.counters.pocket_kept, 0u);
+    EXPECT_GT(radial_both.res.counters.orientation_draws, 0u);
+    std::printf("  %s: solid %.4f plain, %.4f rolled, %.4f rolled with 3 trials, %.4f pocket trials, %.4f rolled with pocket "
+                "trials; radial frame: %.4f plain, %.4f rolled, %.4f rolled with 3 trials and pocket trials\n",
+                family, plain.res.solid_measure, rolled.res.solid_measure, both.res.solid_measure, pocket.res.solid_measure,
+                pocket_rolled.res.solid_measure, radial_plain.res.solid_measure, radial_rolled.res.solid_measure,
+                radial_both.res.solid_measure);
     EXPECT_GT(rolled.res.solid_measure, 1.03 * plain.res.solid_measure);
     EXPECT_GT(both.res.solid_measure, 1.03 * plain.res.solid_measure);
+    EXPECT_GT(pocket.res.solid_measure, 1.02 * plain.res.solid_measure);
+    EXPECT_GT(pocket_rolled.res.solid_measure, 1.01 * rolled.res.solid_measure);
+    EXPECT_GT(radial_rolled.res.solid_measure, 1.01 * radial_plain.res.solid_measure);
+    EXPECT_GT(radial_both.res.solid_measure, 1.01 * radial_rolled.res.solid_measure);
   }
-  // Grown in blocks (threads), a front does not roll: a block's growth is a plane's sweep, and
-  // rolling down it would lay elongated particles across one direction.
+  // Grown in blocks (threads), a front neither rolls nor tries pockets: a block's growth is a
+  // plane's sweep, and choosing by it would lay elongated particles across one direction.
   const PackRun<3> blocks = pack_run<3>(kFamilies3.at("spherocylinder"), setup, 100000, 3, [](fp::PackerOptions& o) {
     o.block_edge = 3.5;
   });
   EXPECT_GT(blocks.res.counters.blocks, 0u);
   EXPECT_EQ(blocks.res.counters.roll_turns, 0u);
+  EXPECT_EQ(blocks.res.counters.pocket_draws, 0u);
   EXPECT_GT(blocks.res.packing.size(), 100u);
+}
+
+/// The texture of the orientations about the seed point c, from the poses alone: over the
+/// particles at least `margin` from c and from the box [0, side]^3's walls, the mean P2 of the
+/// body x axis against the radius (0 when isotropic) with its standard error, and the mean of
+/// sum_i (e_i . r)^4 over the body axes (3/5 when isotropic; a cube's faces along the radius raise
+/// it, its edges lower it) with its standard error.
+struct RadialTexture {
+  double p2 = 0, p2_error = 0, c4 = 0, c4_error = 0;
+  int n = 0;
+};
+RadialTexture radial_texture(const fp::ShapePacking<3>& packing, const Vec3& c, double side, double margin) {
+  std::vector<double> p2, c4;
+  for (const auto& p : packing.particles) {
+    const Vec3 r = p.pose.position - c;
+    if (r.norm() < margin || (p.pose.position.array() < margin).any() || (p.pose.position.array() > side - margin).any()) continue;
+    const Vec3 u = r.normalized();
+    const Vec3 dots = p.pose.rotation.transpose() * u;  // the radius in the body's axes
+    p2.push_back(1.5 * dots.x() * dots.x() - 0.5);
+    c4.push_back(dots.array().pow(4).sum());
+  }
+  auto mean_error = [](const std::vector<double>& v) {
+    double m = 0, q = 0;
+    for (double x : v) m += x;
+    m /= static_cast<double>(v.size());
+    for (double x : v) q += (x - m) * (x - m);
+    return std::pair{m, std::sqrt(q / static_cast<double>(v.size() - 1) / static_cast<double>(v.size()))};
+  };
+  RadialTexture t;
+  t.n = static_cast<int>(p2.size());
+  std::tie(t.p2, t.p2_error) = mean_error(p2);
+  std::tie(t.c4, t.c4_error) = mean_error(c4);
+  return t;
+}
+
+// The lab frame's choices lay elongated particles across the radius from the seed point (the
+// marginal law still passes); the radial frame (the default) leaves no texture about it: the
+// radius seen from each body is the drawn orientation's, uniform. Capsules and cubes in a box of
+// ~1,500, the texture measured here from the poses, the orientation tests passed in both frames.
+TEST(ShapeFrontOrientation, RadialFrameLeavesNoTextureAboutTheSeed) {
+  const double side = 5.5;
+  PackSetup<3> setup;
+  setup.container = std::make_shared<fp::BoxContainer<3>>(Vec3::Zero(), Vec3::Constant(side));
+  setup.sd = box_distance<3>(Vec3::Zero(), Vec3::Constant(side));
+  setup.seed_point = std::vector<double>{side / 2, side / 2, side / 2};
+  setup.name = "box [0,5.5]^3";
+  const Vec3 c = Vec3::Constant(side / 2);
+  for (const char* family : {"spherocylinder", "polyhedron"}) {
+    SCOPED_TRACE(family);
+    const std::string particles = family == std::string("polyhedron") ? "  - shape: polyhedron\n    preset: cube\n" + kSize
+                                                                      : kFamilies3.at(family);
+    auto fill = [&](fp::OrientationFrame frame) {
+      return pack_run<3>(particles, setup, 100000, 7, [&](fp::PackerOptions& o) { o.orientation_frame = frame; });
+    };
+    const PackRun<3> lab = fill(fp::OrientationFrame::Lab), radial = fill(fp::OrientationFrame::Radial);
+    for (const PackRun<3>* run : {&lab, &radial}) {
+      std::vector<fp::Mat<3>> rotations;
+      for (const auto& p : run->res.packing.particles) rotations.push_back(p.pose.rotation);
+      const fp::OrientationFit fit = fp::orientation_fit<3>(rotations, fp::OrientationLaw<3>::isotropic());
+      EXPECT_TRUE(fit.passes(fp::kOrientationAlpha)) << fit.describe();
+    }
+    const RadialTexture tl = radial_texture(lab.res.packing, c, side, 0.8), tr = radial_texture(radial.res.packing, c, side, 0.8);
+    std::printf("  %s: lab frame: %zu particles, P2(a.r) %+.4f +- %.4f, sum (e.r)^4 %.4f +- %.4f over %d; radial frame: %zu "
+                "particles, P2(a.r) %+.4f +- %.4f, sum (e.r)^4 %.4f +- %.4f over %d\n",
+                family, lab.res.packing.size(), tl.p2, tl.p2_error, tl.c4, tl.c4_error, tl.n, radial.res.packing.size(), tr.p2,
+                tr.p2_error, tr.c4, tr.c4_error, tr.n);
+    ASSERT_GT(tr.n, 300);
+    EXPECT_LT(std::abs(tr.p2), 3.5 * tr.p2_error);
+    EXPECT_LT(std::abs(tr.c4 - 0.6), 3.5 * tr.c4_error);
+    EXPECT_GT(radial.res.counters.reframe_misses, 0u);  // some: the scan's orientation is kept there
+    EXPECT_LT(radial.res.counters.reframe_misses, radial.res.packing.size() / 10);
+    // The lab frame's texture, which the test would see: capsules across the radius, cubes' edges
+    // along it.
+    if (family == std::string("spherocylinder")) EXPECT_LT(tl.p2, -6 * tl.p2_error);
+    else EXPECT_LT(tl.c4 - 0.6, -4 * tl.c4_error);
+  }
 }
 
 TEST(ShapeFrontDistributions, SizeOnANamedDimension) {

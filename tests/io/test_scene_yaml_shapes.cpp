@@ -418,14 +418,31 @@ TEST(SceneYamlShapes, OrientationSearchKeys) {
   const Scene d = parse_scene(kBox3 + kCapsules, kFile);
   EXPECT_EQ(d.packer.orientation_trials, 1);
   EXPECT_EQ(d.packer.roll_steps, 60);
-  const Scene s = parse_scene(kBox3 + kCapsules + "packer: {orientation_trials: 4, roll_steps: 0}\n", kFile);
+  EXPECT_EQ(d.packer.pocket_trials, 32);
+  EXPECT_EQ(d.packer.orientation_frame, fp::OrientationFrame::Radial);
+  EXPECT_FALSE(d.packer.face_to_face);
+  const Scene s = parse_scene(kBox3 + kCapsules + "packer: {orientation_trials: 4, roll_steps: 0, pocket_trials: 0}\n", kFile);
   EXPECT_EQ(s.packer.orientation_trials, 4);
   EXPECT_EQ(s.packer.roll_steps, 0);
+  EXPECT_EQ(s.packer.pocket_trials, 0);
+  const Scene lab = parse_scene(kBox3 + kCapsules + "packer: {orientation_frame: lab, face_to_face: true}\n", kFile);
+  EXPECT_EQ(lab.packer.orientation_frame, fp::OrientationFrame::Lab);
+  EXPECT_TRUE(lab.packer.face_to_face);
+  expect_error(kBox3 + kCapsules + "packer: {orientation_frame: polar}\n", 6, "packer.orientation_frame", {"radial", "lab"});
+  // Face-to-face turns are not turns about the radius: the radial frame refuses them.
+  expect_error(kBox3 + kCapsules + "packer: {face_to_face: true}\n", 6, "packer.face_to_face", {"radial", "orientation_frame: lab"});
+  expect_error(kBox3 + kCapsules + "packer:\n  orientation_frame: radial\n  face_to_face: true\n", 8, "packer.face_to_face",
+               {"orientation_frame: lab"});
+  expect_error(kBox3 + kCapsules + "packer: {pocket_trials: 10001}\n", 6, "packer.pocket_trials", {"from 0 to 10000"});
+  expect_error(kBox3 + kCapsules + "packer: {pocket_trials: 2.5}\n", 6, "packer.pocket_trials", {"integer"});
   expect_error(kBox3 + kCapsules + "packer: {orientation_trials: 0}\n", 6, "packer.orientation_trials", {"from 1 to 10000"});
   expect_error(kBox3 + kCapsules + "packer: {roll_steps: -1}\n", 6, "packer.roll_steps", {"non-negative integer"});
   expect_error("dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [10, 10, 10]}\n"
                "particles: {radius: {distribution: uniform, min: 1, max: 2}}\npacker: {roll_steps: 5}\n",
                4, "packer.roll_steps", {"spheres", "have none"});
+  expect_error("dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [10, 10, 10]}\n"
+               "particles: {radius: {distribution: uniform, min: 1, max: 2}}\npacker: {orientation_frame: lab}\n",
+               4, "packer.orientation_frame", {"spheres", "have none"});
 }
 
 TEST(SceneYamlShapesErrors, NonUnitQuaternion) {
