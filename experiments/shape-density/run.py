@@ -1,13 +1,15 @@
 #!/usr/bin/python3
 """How dense the front packs each shape family, against the physical references, per lever of the
-orientation choice (the roll, orientation trials), and what each lever costs.
+orientation choice (the roll, orientation trials, pocket trials), what each lever costs, and the
+texture it leaves about the seed point.
 
 Every run is one whole `frontpack pack` process on one core (flock'ed against other timed runs),
 with the issue's protocol: circumscribed radii U[0.5, 1], isotropic orientations, a box of side 12
 (3D; 6 largest diameters) or a square of side 30 (2D). Figures come from each run's record: the
 solid fraction of the core (2 r_max inside every wall) and of the whole container, within 2 r_max
 of the walls, coordination, the orientation tests' smallest p and the nematic order about z, the
-validation's verdict; the rate is particles per CPU-second of the whole process (user + system
+validation's verdict; the texture about the seed point is computed here from the packing
+(radial_texture); the rate is particles per CPU-second of the whole process (user + system
 time of the child, so the analysis and the output are in it) and per second of packing.
 
     FRONTPACK=build/cli/frontpack /usr/bin/python3 experiments/shape-density/run.py [all|families|sweeps|mixture|report] [FAMILY,...]
@@ -54,14 +56,22 @@ FAMILIES = {
     "stadium L/D 1": (2, "shape: spherocylinder\n    aspect_ratio: 0.5", (None, "peak of 2D spherocylinders near this shape (Marschall & Teitel 2018), value not found")),
     "disk dimer": (2, "shape: cluster\n    preset: dimer", (None, "Schreck, Xu & O'Hern 2010, value not found")),
 }
-# Lever: the packer keys it sets.
+# Lever: the packer keys it sets. The lab frame's levers turn particles about any axis (the
+# defaults before the radial frame); the radial frame's turn them about the radius only.
 LEVERS = {
-    "plain": {"roll_steps": 0, "orientation_trials": 1},
-    "roll 60 (default)": {"roll_steps": 60, "orientation_trials": 1},
-    "roll 60, trials 2": {"roll_steps": 60, "orientation_trials": 2},
-    "roll 60, trials 4": {"roll_steps": 60, "orientation_trials": 4},
-    "roll 60, trials 2 face to face": {"roll_steps": 60, "orientation_trials": 2, "face_to_face": "true"},
+    "lab: plain": {"orientation_frame": "lab", "roll_steps": 0, "orientation_trials": 1, "pocket_trials": 0},
+    "lab: roll 60": {"orientation_frame": "lab", "roll_steps": 60, "orientation_trials": 1, "pocket_trials": 0},
+    "lab: roll 60, trials 4": {"orientation_frame": "lab", "roll_steps": 60, "orientation_trials": 4, "pocket_trials": 0},
+    "lab: roll 60, trials 2 face to face": {"orientation_frame": "lab", "roll_steps": 60, "orientation_trials": 2,
+                                            "pocket_trials": 0, "face_to_face": "true"},
+    "lab: roll 60, pocket 32": {"orientation_frame": "lab", "roll_steps": 60, "orientation_trials": 1, "pocket_trials": 32},
+    "radial: plain": {"orientation_frame": "radial", "roll_steps": 0, "orientation_trials": 1, "pocket_trials": 0},
+    "radial: roll 60, pocket 32 (default)": {"orientation_frame": "radial", "roll_steps": 60, "orientation_trials": 1,
+                                             "pocket_trials": 32},
+    "radial: roll 60, trials 4, pocket 32": {"orientation_frame": "radial", "roll_steps": 60, "orientation_trials": 4,
+                                             "pocket_trials": 32},
 }
+DEFAULT = "radial: roll 60, pocket 32 (default)"
 # The face-to-face trials apply to polytopes only.
 POLYTOPES = {"cube", "tetrahedron", "icosahedron", "square", "hexagon"}
 # The aspect-ratio sweeps (default lever): prolate spheroids [a, 1, 1] and capsules by L/D.
@@ -77,6 +87,34 @@ def scene_text(dimension, shape, packer, seed, container=None, extra=""):
             f"packer: {{{keys}}}\n{extra}")
 
 
+def radial_texture(packing, dimension, core_margin=2.0):
+    """The orientations' texture about the seed point (the box's centre), from the packing file:
+    over the particles of the core farther than 2 from the seed, the mean P2 of the body x axis
+    against the radius (3D <P2(a.r)>, 2D <cos 2 psi>; 0 when isotropic) and the mean of
+    sum_i (e_i.r)^4 over the body axes (isotropic: 3/5 in 3D, 3/4 in 2D; above it, a face or axis
+    of the body along the radius, below it across), which sees the texture of cubes that the axis'
+    P2 cannot. Returns (p2, p2 noise, c4, c4 noise, particles counted)."""
+    import numpy as np
+    d = json.loads(Path(packing).read_text())
+    P = np.array([p["position"] for p in d["particles"]], dtype=float)
+    w, x, y, z = np.array([p["quaternion"] for p in d["particles"]], dtype=float).T
+    axes = np.stack([np.stack([1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)], 1),
+                     np.stack([2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)], 1),
+                     np.stack([2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)], 1)], 1)[:, :dimension, :dimension]
+    side = 12.0 if dimension == 3 else 30.0
+    c = np.full(dimension, side / 2)
+    r = P[:, :dimension] - c
+    rn = np.linalg.norm(r, axis=1)
+    keep = (rn > 2) & np.all(np.abs(r) < side / 2 - core_margin, axis=1)
+    if keep.sum() < 10:
+        return None
+    dots = np.einsum("kij,kj->ki", axes[keep], r[keep] / rn[keep][:, None])
+    p2 = 1.5 * dots[:, 0] ** 2 - 0.5 if dimension == 3 else 2 * dots[:, 0] ** 2 - 1
+    c4 = np.sum(dots ** 4, axis=1)
+    n = int(keep.sum())
+    return float(p2.mean()), float(p2.std() / n ** 0.5), float(c4.mean()), float(c4.std() / n ** 0.5), n
+
+
 def run(name, text, **info):
     """One frontpack pack of the scene text: the figures of its record and the CPU time of the process."""
     with tempfile.TemporaryDirectory(prefix="fp-shape-density-") as tmp:
@@ -87,7 +125,7 @@ def run(name, text, **info):
             fcntl.flock(lock, fcntl.LOCK_EX)
             before = resource.getrusage(resource.RUSAGE_CHILDREN)
             t0 = time.monotonic()
-            p = subprocess.run([runkit.FRONTPACK, "pack", str(scene), "-o", str(Path(tmp) / "out.csv"), "--record", str(record)],
+            p = subprocess.run([runkit.FRONTPACK, "pack", str(scene), "-o", str(Path(tmp) / "out.json"), "--record", str(record)],
                                capture_output=True, text=True)
             wall = time.monotonic() - t0
             after = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -95,6 +133,7 @@ def run(name, text, **info):
         if p.returncode not in (0, 3) or not record.exists():
             raise SystemExit(f"{name}: frontpack failed ({p.returncode}): {p.stderr[-800:]}")
         r = json.loads(record.read_text())
+        texture = radial_texture(Path(tmp) / "out.json", r["dimension"]) if Path(tmp, "out.json").exists() else None
     m, c, a = r["metrics"], r["counters"], r["analysis"]
     fits = [f for f in a["validation"].get("orientations", []) if f]
     row = dict(info, name=name, n=r["n"], core=m["volume_fraction_core"], container=m["volume_fraction_container"],
@@ -105,6 +144,9 @@ def run(name, text, **info):
                sizes_p=m["radii_pvalue"], valid=r["info"]["validation"], stop=r["info"]["stop_reason"],
                pack_seconds=r["timings"]["pack"], cpu_seconds=cpu, wall_seconds=wall,
                roll_turns=c.get("roll_turns", 0), roll_kept=c.get("roll_kept", 0), solves=c["solves"],
+               pocket_kept=c.get("pocket_kept", 0), radial_p2=texture[0] if texture else None,
+               radial_p2_noise=texture[1] if texture else None, radial_c4=texture[2] if texture else None,
+               radial_c4_noise=texture[3] if texture else None,
                minimisations=c.get("minimisations", 0), wall_profile=a["volume_fraction"].get("wall_profile"))
     print(f"{name:60s} n={row['n']:6d} core {row['core']:.4f} container {row['container']:.4f} "
           f"{row['n'] / cpu:8.0f}/cpu-s  orientation p {row['orientation_p'] if row['orientation_p'] is not None else float('nan'):.3g} "
@@ -119,7 +161,7 @@ def families(only=None):
             continue
         dimension, shape, _ = spec[:3]
         cap = spec[3] if len(spec) > 3 else None
-        levers = ["plain", "roll 60 (default)"] if cap else [l for l in LEVERS if "face" not in l or family in POLYTOPES]
+        levers = ["lab: plain", "lab: roll 60", DEFAULT] if cap else [l for l in LEVERS if "face" not in l or family in POLYTOPES]
         seeds = SEEDS[:1] if cap else SEEDS
         for lever in levers:
             for seed in seeds:
@@ -181,16 +223,23 @@ def report(rows):
             s, _ = mean_sd([r["axis_order"] for r in g])
             noise, _ = mean_sd([r["axis_noise"] for r in g])
             op = min((r["orientation_p"] for r in g if r["orientation_p"] is not None), default=float("nan"))
+            p2, _ = mean_sd([r.get("radial_p2") for r in g])
+            p2_noise, _ = mean_sd([r.get("radial_p2_noise") for r in g])
+            c4, _ = mean_sd([r.get("radial_c4") for r in g])
+            c4_noise, _ = mean_sd([r.get("radial_c4_noise") for r in g])
+            texture = (f"{p2:+.3f} / {c4 - (0.6 if spec[0] == 3 else 0.75):+.3f} (±{2 * p2_noise / len(g) ** 0.5:.3f} / "
+                       f"±{2 * c4_noise / len(g) ** 0.5:.3f})" if p2 == p2 and family != "sphere" and family != "disk" else "–")
             valid = "all ok" if all(r["valid"] == "ok" for r in g) else ", ".join(sorted({r["valid"] for r in g}))
             ratio = f"{core / ref:.3f}" if ref else "–"
             cap = f" (cap {g[0]['cap']} s)" if g[0].get("cap") else ""
             table_rows.append([f"{family}{cap}", lever, len(g), f"{mean_sd([r['n'] for r in g])[0]:,.0f}",
                                f"{core:.4f} ± {core_sd:.4f}", f"{ref:.3f}" if ref else "–", ratio, f"{cont:.4f}", f"{layer:.4f}",
-                               f"{rate:,.0f}", f"{z:.2f}", f"{s:+.3f} ({noise:.3f})", f"{op:.2g}", valid])
+                               f"{rate:,.0f}", f"{z:.2f}", f"{s:+.3f} ({noise:.3f})", f"{op:.2g}", texture, valid])
     out += ["### Every family, every lever", "",
             runkit.table(["family", "lever", "runs", "N", "core VF (mean ± sd)", "reference", "core / reference",
                           "container VF", "within 2 r_max of walls", "particles / CPU-s", "z",
-                          "order S about z (noise)", "smallest orientation p", "validation"], table_rows), ""]
+                          "order S about z (noise)", "smallest orientation p",
+                          "texture about the seed: radial P2 / c4 - isotropic (2 sd)", "validation"], table_rows), ""]
     out += ["References (core VF's yardstick):", ""]
     out += [f"* {family}: {spec[2][0] if spec[2][0] else '–'}: {spec[2][1]}" for family, spec in FAMILIES.items()]
     out += [""]
@@ -243,20 +292,23 @@ def report(rows):
             for family, spec in FAMILIES.items():
                 if spec[0] != dimension:
                     continue
-                xs, ys = [], []
-                for lever in LEVERS:
-                    g = [r for r in fam if r["family"] == family and r["lever"] == lever]
-                    if g:
-                        xs.append(mean_sd([r["core"] for r in g])[0])
-                        ys.append(mean_sd([r["n"] / r["cpu_seconds"] for r in g])[0])
-                if xs:
-                    line, = ax.plot(xs, ys, "o-", ms=4, label=family)
-                    if spec[2][0]:
-                        ax.axvline(spec[2][0], color=line.get_color(), lw=0.6, ls=":")
+                colour = None
+                for frame, style in (("lab", "o-"), ("radial", "s--")):
+                    xs, ys = [], []
+                    for lever in LEVERS:
+                        g = [r for r in fam if r["family"] == family and r["lever"] == lever and lever.startswith(frame)]
+                        if g:
+                            xs.append(mean_sd([r["core"] for r in g])[0])
+                            ys.append(mean_sd([r["n"] / r["cpu_seconds"] for r in g])[0])
+                    if xs:
+                        line, = ax.plot(xs, ys, style, ms=4, color=colour, label=family if colour is None else None)
+                        colour = line.get_color()
+                if colour and spec[2][0]:
+                    ax.axvline(spec[2][0], color=colour, lw=0.6, ls=":")
             ax.set_yscale("log")
             ax.set_xlabel("core solid fraction (dotted: the family's reference)")
             ax.set_ylabel("particles per CPU-second (whole run)")
-            ax.set_title(f"{dimension}D: levers plain -> roll -> trials 2 -> trials 4 (-> face to face)")
+            ax.set_title(f"{dimension}D levers: lab frame (solid), radial frame (dashed)")
             ax.grid(alpha=0.3)
             ax.legend(fontsize=7)
         fig.tight_layout()
@@ -268,7 +320,7 @@ def report(rows):
         fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
         for ax, dimension in zip(axes, (3, 2)):
             for k, (family, spec) in enumerate(f for f in FAMILIES.items() if f[1][0] == dimension):
-                g = [r for r in fam if r["family"] == family and r["lever"] == "roll 60 (default)" and r["seed"] == 1]
+                g = [r for r in fam if r["family"] == family and r["lever"] == DEFAULT and r["seed"] == 1]
                 if not g or not g[0].get("wall_profile"):
                     continue
                 w = g[0]["wall_profile"]
