@@ -262,8 +262,8 @@ class ShapeModel {
   /// Orientations the pocket trials draw: the packer's pocket_trials under an isotropic law; none
   /// for a ball (one orientation is all of them), and none for any other law: choosing among its
   /// draws by what fits the pocket biases it (capsules under a Watson law of order 0.71 came out
-  /// at 0.64, polar angle p = 2e-5, with 32), while under the isotropic law every direction of
-  /// the pocket is alike.
+  /// at 0.64, polar angle p = 2e-5, with 32). Under the isotropic law the marginal law is kept;
+  /// the relation to the radius from the seed only in the radial frame (front/radial_frame.hpp).
   int pocket_trials(const Draft& d) const { return isotropic(d) ? pocket_trials_ : 0; }
   /// Whether the draft's law is isotropic (and it is no ball): the radial frame applies.
   bool isotropic(const Draft& d) const { return law_of(d).kind() == OrientationKind::Isotropic && !is_ball(d); }

@@ -122,8 +122,8 @@ struct PackerOptions {
   /// Non-spherical particles: orientations drawn from the template's law per placement, the
   /// position kept by the compactness rule over all of them (front/advancing_front.hpp).
   int orientation_trials = 1;
-  /// Non-spherical particles: orientation trials beyond the first turn a face of a polytope
-  /// against one of s0's (isotropic laws; other shapes draw from their law).
+  /// Non-spherical particles, lab frame: orientation trials beyond the first turn a face of a
+  /// polytope against one of s0's (isotropic laws; other shapes draw from their law).
   bool face_to_face = false;
   /// Non-spherical particles under the isotropic law: orientations drawn per placement in the
   /// pocket the scan found (its contact problem solved again at each), the one closest to the
