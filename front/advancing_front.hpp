@@ -530,7 +530,7 @@ class AdvancingFront {
 
   /// Radial frame: the scan placed the draft relative to s0's radius, but the radius that counts
   /// is its own position's, which the scan's choice of the side of s0 couples to the orientation
-  /// (capsules: <P2(a.r)> +0.17 without it). The orientation is set again relative to the
+  /// (capsules: <P2(a.r)> +0.19 without it). The orientation is set again relative to the
   /// position's radius (the same turn about it) and the same pocket solved again; the solution
   /// nearest the scan's is taken even if farther from the seed point. False if none passes the
   /// checks: the scan's is kept.
