@@ -5,12 +5,12 @@
 // (closest to the seed) couples a particle's orientation to the radius from the seed: the scan's
 // choice of the side of s0, the roll and the pocket trials laid capsules, ellipsoids and dimers
 // across the radius (<P2(a.r)> down to -0.40 for ellipsoids; 2D ellipses -0.72) while the
-// marginal law passed its tests (experiments/shape-density). In the radial frame a draft's drawn orientation Q (isotropic)
-// is read relative to the radius r at the position tried, R = A(r, phi) F(r) Q, with F(r) a fixed
-// rotation taking the frame's axis to r and A(r, phi) the rotation by phi about r: whatever phi
-// the choices pick, the radius seen from the body, R^T r = Q^T e, is Q's, uniform. Only the turn
-// about the radius is chosen, and a turn about the radius does not change the particle's
-// relation to it.
+// marginal law passed its tests (experiments/shape-density). In the radial frame a draft's drawn
+// orientation Q (isotropic) is read relative to the radius r at the position tried,
+// R = A(r, phi) F(r) Q, with F(r) a fixed rotation taking the frame's axis e to r and A(r, phi)
+// the rotation by phi about r: whatever phi the choices pick, the radius seen from the body,
+// R^T r = Q^T e, is Q's, uniform. Only the turn about the radius is chosen, and a turn about the
+// radius does not change the particle's relation to it.
 #include <cmath>
 
 #include <Eigen/Geometry>
