@@ -66,6 +66,7 @@ PackCheck pack_check_of(const PackingAnalysis& a) {
   if (a.orientation) {
     c.metrics.emplace_back("orientation_order", a.orientation_order);
     c.metrics.emplace_back("orientation_radial_order", a.radial_order);
+    c.metrics.emplace_back("orientation_radial_axes_order", a.radial_axes_order);
   }
   // The smallest p of the orientation tests, and the order about the law's axis, per template.
   for (std::size_t t = 0; t < c.validation.orientations.size(); ++t) {

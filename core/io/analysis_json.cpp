@@ -173,7 +173,9 @@ std::string analysis_json(const PackingAnalysis& a, bool include_timings) {
                             {"tensor", fabric_json(*a.orientation, a.dimension)},
                             {"order", a.orientation_order},
                             {"radial_order", a.radial_order},
-                            {"radial_order_noise", a.radial_order_noise}};
+                            {"radial_order_noise", a.radial_order_noise},
+                            {"radial_axes_order", a.radial_axes_order},
+                            {"radial_axes_order_noise", a.radial_axes_order_noise}};
   j["validation"] = a.validation ? validation_json(*a.validation) : Json(nullptr);
   if (include_timings) {
     j["timings"] = Json::object();

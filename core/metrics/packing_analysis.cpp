@@ -116,6 +116,8 @@ std::string PackingAnalysis::summary() const {
     eigen("orientation tensor  ", *orientation);
     line("radial order         %.4f (axes against the direction from the reference centre; isotropic 0 +- %.4f, "
          "> 0 radial, < 0 tangential)", radial_order, radial_order_noise);
+    line("radial axes order    %.4f (every body axis: <sum (e.r)^4> less its isotropic mean; isotropic 0 +- %.4f, "
+         "> 0 a face along the radius, < 0 an edge)", radial_axes_order, radial_axes_order_noise);
   }
   if (validation) {
     s += '\n';

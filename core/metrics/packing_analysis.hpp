@@ -102,6 +102,12 @@ struct PackingAnalysis {
   /// the radius, < 0 across it (an onion). The marginal orientation tests cannot see it.
   double radial_order = 0.0;
   double radial_order_noise = 0.0;
+  /// The same texture seen by every body axis e_i: <sum_i (e_i . r)^4> less its isotropic mean
+  /// (3/5 in 3D, 3/4 in 2D), within radial_axes_order_noise when there is none; > 0 a face or
+  /// axis of the body along the radius, < 0 an edge or diagonal. It sees cubes, whose x axis'
+  /// radial order is blind to them (any of their axes may be the radial one).
+  double radial_axes_order = 0.0;
+  double radial_axes_order_noise = 0.0;
   std::optional<ValidationReport> validation;
   std::vector<std::pair<std::string, double>> timings;  ///< seconds per part (not deterministic)
 

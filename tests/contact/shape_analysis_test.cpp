@@ -117,11 +117,13 @@ TEST(ShapeAnalysis, OrientationAndEquivalentRadius) {
 
 // The radial order: capsules pointing at the box's centre give 1, capsules across the radius
 // (axes along z, in the plane z = centre) -1/2, and the marginal order cannot tell the second
-// from a random set.
+// from a random set. The radial axes order sees every body axis: a body axis along the radius
+// gives 1 - 3/5, the radius in a body plane at every angle <cos^4 + sin^4> - 3/5 = 3/20, a body
+// diagonal along it 1/3 - 3/5 (a cube's corner outwards).
 TEST(ShapeAnalysis, RadialOrderSeesAnOnion) {
   const BoxContainer<3> box(Vec3::Zero(), Vec3::Constant(20.0));
   const Vec3 centre = box.interior_point();
-  auto ring = [&](bool radial) {
+  auto ring = [&](bool radial, bool diagonal = false) {
     ShapePacking<3> p;
     p.template_names = {"spherocylinder"};
     for (int k = 0; k < 24; ++k) {
@@ -131,8 +133,9 @@ TEST(ShapeAnalysis, RadialOrderSeesAnOnion) {
       q.shape = std::make_shared<SpherocylinderShape<3>>(0.25, 0.2);
       q.pose.position = centre + 6.0 * u;
       // Body x along u (radial) or along z (tangential: across the radius).
-      q.pose.rotation = radial ? Eigen::Matrix3d(Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), u))
-                               : Eigen::Matrix3d(Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), Vec3::UnitZ()));
+      q.pose.rotation = diagonal ? Eigen::Matrix3d(Eigen::Quaterniond::FromTwoVectors(Vec3::Ones(), u))
+                        : radial ? Eigen::Matrix3d(Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), u))
+                                 : Eigen::Matrix3d(Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), Vec3::UnitZ()));
       p.particles.push_back(q);
     }
     return analyze_shape_packing<3>(p, box, {}, {"spherocylinder"});
@@ -141,6 +144,10 @@ TEST(ShapeAnalysis, RadialOrderSeesAnOnion) {
   EXPECT_NEAR(out.radial_order, 1.0, 1e-12);
   EXPECT_NEAR(across.radial_order, -0.5, 1e-12);
   EXPECT_NEAR(out.radial_order_noise, std::sqrt(0.2 / 24), 1e-12);
+  EXPECT_NEAR(out.radial_axes_order, 0.4, 1e-12);
+  EXPECT_NEAR(across.radial_axes_order, 0.15, 1e-12);
+  EXPECT_NEAR(ring(true, true).radial_axes_order, 1.0 / 3 - 0.6, 1e-12);
+  EXPECT_NEAR(out.radial_axes_order_noise, std::sqrt(16.0 / 525 / 24), 1e-12);
 }
 
 }  // namespace
