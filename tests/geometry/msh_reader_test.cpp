@@ -6,7 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -34,13 +37,20 @@ std::string file_text(const std::string& path) {
   return s.str();
 }
 
+// A file of this process' own: ctest runs each test as its own process, two at a time, and a
+// shared name let one test read the bytes another was writing.
+std::string own_path(const std::string& stem) {
+  return std::string(FRONTPACK_BINARY_DIR) + "/" + stem + "_" + std::to_string(::getpid()) + ".msh";
+}
+
 std::string error_reading(const std::string& bytes) {
-  const std::string path = std::string(FRONTPACK_BINARY_DIR) + "/msh_reader_test_bad.msh";
+  const std::string path = own_path("msh_reader_test_bad");
   std::ofstream(path, std::ios::binary) << bytes;
   TetMesh m;
   std::string error;
-  if (read_msh(path, m, error)) return "";
-  return error;
+  const bool ok = read_msh(path, m, error);
+  std::remove(path.c_str());
+  return ok ? "" : error;
 }
 
 double signed_volume(const TetMesh& m, std::size_t t) {
@@ -103,9 +113,10 @@ const std::string kTiny =
     "$Elements\n2\n1 15 2 0 1 1\n2 4 2 7 1 1 2 3 4\n$EndElements\n";
 
 TEST(MshReader, AHandWrittenVersion22FileWithAPointElement) {
-  const std::string path = std::string(FRONTPACK_BINARY_DIR) + "/msh_reader_test_tiny.msh";
+  const std::string path = own_path("msh_reader_test_tiny");
   std::ofstream(path, std::ios::binary) << kTiny;
   const TetMesh m = read_ok(path);
+  std::remove(path.c_str());
   ASSERT_EQ(m.tets.size(), 1u);  // the point element is read past
   EXPECT_EQ(m.tets[0], (std::array<std::uint32_t, 4>{0, 1, 2, 3}));
   EXPECT_EQ(m.tet_group[0], 7);
