@@ -12,7 +12,7 @@
 //    the registry picks for the kinds involved (paper 004: wrappers, minimisation).
 // What a model provides: the public members of front/sphere_model.hpp, the smallest model (the
 // manager uses every one of them); a model whose drafts turn (kTurns: shapes) also the members of
-// front/shape_model.hpp's orientation section (orientation trials and the roll).
+// front/shape_model.hpp's orientation section (orientation and pocket trials, the roll).
 // Differences from the paper, each an option measured in experiments/front-levers/RESULTS.md,
 // the same for every shape:
 //  * walls are bodies (PackerOptions::walls_as_bodies): near the boundary the walls within
@@ -520,10 +520,10 @@ class AdvancingFront {
       // Radial frame: until the orientation is set relative to the position's own radius, any
       // solution of the pocket trials replaces the scan's, farther or not.
       bool unframed = radial && !reframe(d, best, drawn, kept_turn, res);
-      if (choose && model_.pocket_trials(d) > 0 && !(radial && D == 2))
-        pocket_trials(d, best, radial ? &drawn : nullptr, unframed, res);
+      const bool turn = choose && !(radial && D == 2);  // 2D: no turn keeps the angle to the radius
+      if (turn && model_.pocket_trials(d) > 0) pocket_trials(d, best, radial ? &drawn : nullptr, unframed, res);
       if (unframed) ++res.counters.reframe_misses;
-      if (choose && opt_.roll_steps > 0 && model_.may_roll(d) && !(radial && D == 2)) roll(d, best, radial, res);
+      if (turn && opt_.roll_steps > 0 && model_.may_roll(d)) roll(d, best, radial, res);
       return true;
     }
   }
@@ -539,13 +539,11 @@ class AdvancingFront {
     std::array<Placement<D>, Model::kMaxPlacements> out;
     model_.begin_roll();
     model_.set_orientation(d, at_radius<D>(best.position - seed_point_, turn, drawn));
-    model_.orient(d);
-    ++res.counters.solves;
-    const int m = model_.solve(best.i, best.j, std::span<Placement<D>>(out.data(), out.size()));
+    const int m = solve_again(d, best, out, res);
     int q = -1;
     for (int c = 0; c < m; ++c) {
       const Vec<D>& x = out[c].position;
-      if (off_face(d, x, best.i, best.j, best.rank) || rejection(d, x, best.rank, kRollAllowance) != Rejection::None) continue;
+      if (!keeps_pocket(d, x, best)) continue;
       if (q < 0 || (x - best.position).squaredNorm() < (out[q].position - best.position).squaredNorm()) q = c;
     }
     if (q >= 0) {
@@ -575,16 +573,13 @@ class AdvancingFront {
     model_.begin_roll();
     for (int t = model_.pocket_trials(d); t > 0; --t) {
       ++res.counters.pocket_draws;
-      ++res.counters.solves;
       if (relative) model_.set_orientation(d, at_radius<D>(radius, 2 * kPi * rng_.uniform01(), *relative));
       else model_.redraw_orientation(d, rng_);
-      model_.orient(d);
-      const int m = model_.solve(best.i, best.j, std::span<Placement<D>>(out.data(), out.size()));
+      const int m = solve_again(d, best, out, res);
       bool better = false;
       for (int c = 0; c < m; ++c) {
         const Vec<D>& x = out[c].position;
-        if ((unframed || growth_key(x) < best.key) && !off_face(d, x, best.i, best.j, best.rank) &&
-            rejection(d, x, best.rank, kRollAllowance) == Rejection::None) {
+        if ((unframed || growth_key(x) < best.key) && keeps_pocket(d, x, best)) {
           best.position = x;
           best.key = growth_key(x);
           better = true;
@@ -617,17 +612,14 @@ class AdvancingFront {
     model_.begin_roll();
     for (int t = 0; t < opt_.roll_steps && angle >= kMinRollAngle; ++t) {
       ++res.counters.roll_turns;
-      ++res.counters.solves;
       if (radial) model_.set_orientation(d, about_radius<D>(best.position - seed_point_, angle * rng_.uniform(-1.0, 1.0)) * kept);
       else model_.turn(d, angle, rng_);
-      model_.orient(d);
-      const int m = model_.solve(best.i, best.j, std::span<Placement<D>>(out.data(), out.size()));
+      const int m = solve_again(d, best, out, res);
       int q = -1;
       for (int c = 0; c < m; ++c)
         if (q < 0 || (out[c].position - best.position).squaredNorm() < (out[q].position - best.position).squaredNorm()) q = c;
       const bool closer = q >= 0 && growth_key(out[q].position) < best.key;
-      if (closer && !off_face(d, out[q].position, best.i, best.j, best.rank) &&
-          rejection(d, out[q].position, best.rank, kRollAllowance) == Rejection::None) {
+      if (closer && keeps_pocket(d, out[q].position, best)) {
         best.position = out[q].position;
         best.key = growth_key(best.position);
         kept = model_.orientation(d);
@@ -640,6 +632,21 @@ class AdvancingFront {
     }
     model_.set_orientation(d, kept);
     model_.orient(d);
+  }
+
+  /// The pocket of `best` (s0 and its bodies i, j) solved again for the draft's current
+  /// orientation (the reframe, the pocket trials, the roll); the solutions' count.
+  int solve_again(const Draft& d, const Found& best, std::span<Placement<D>> out, Result& res) {
+    model_.orient(d);
+    ++res.counters.solves;
+    return model_.solve(best.i, best.j, out);
+  }
+
+  /// Whether x, a solution of best's pocket solved again, may be kept: on the faces of the walls
+  /// it touches, inside, overlapping nothing beyond kRollAllowance x the tolerance (a turn pushes
+  /// against a fourth body: with the scan's allowance it would end inside it by the whole of it).
+  bool keeps_pocket(const Draft& d, const Vec<D>& x, const Found& best) {
+    return !off_face(d, x, best.i, best.j, best.rank) && rejection(d, x, best.rank, kRollAllowance) == Rejection::None;
   }
 
   /// A position x of the draft solved against bodies i and j of rank 0 (a wall among them) that
