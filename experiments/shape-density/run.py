@@ -201,6 +201,22 @@ def mean_sd(values):
     return m, (sum((v - m) ** 2 for v in values) / (len(values) - 1)) ** 0.5 if len(values) > 1 else 0.0
 
 
+def decorate(ax, xlabel, ylabel, title, fontsize=7):
+    """An axis' labels, title, grid and legend, alike in every figure."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=fontsize)
+
+
+def save(fig, name):
+    import matplotlib.pyplot as plt
+    fig.tight_layout()
+    fig.savefig(HERE / name, dpi=110)
+    plt.close(fig)
+
+
 def report(rows):
     import matplotlib
     matplotlib.use("Agg")
@@ -269,14 +285,9 @@ def report(rows):
                     ys.append(m)
                     es.append(e)
             ax.errorbar(xs, ys, yerr=es, marker="o", capsize=3, label=label)
-        ax.set_xlabel("aspect ratio (length / width)")
-        ax.set_ylabel("core solid fraction")
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
-        ax.set_title("frontpack defaults; physics peaks near 1.4-1.5")
-        fig.tight_layout()
-        fig.savefig(HERE / "aspect_ratio.png", dpi=110)
-        plt.close(fig)
+        decorate(ax, "aspect ratio (length / width)", "core solid fraction", "frontpack defaults; physics peaks near 1.4-1.5",
+              fontsize=8)
+        save(fig, "aspect_ratio.png")
 
     mix = [r for r in rows if r["part"] == "mixture"]
     if mix:
@@ -306,14 +317,9 @@ def report(rows):
                 if colour and spec[2][0]:
                     ax.axvline(spec[2][0], color=colour, lw=0.6, ls=":")
             ax.set_yscale("log")
-            ax.set_xlabel("core solid fraction (dotted: the family's reference)")
-            ax.set_ylabel("particles per CPU-second (whole run)")
-            ax.set_title(f"{dimension}D levers: lab frame (solid), radial frame (dashed)")
-            ax.grid(alpha=0.3)
-            ax.legend(fontsize=7)
-        fig.tight_layout()
-        fig.savefig(HERE / "rate_vs_core.png", dpi=110)
-        plt.close(fig)
+            decorate(ax, "core solid fraction (dotted: the family's reference)", "particles per CPU-second (whole run)",
+                  f"{dimension}D levers: lab frame (solid), radial frame (dashed)")
+        save(fig, "rate_vs_core.png")
 
     if fam:
         # The wall layers of every family with the defaults (seed 1): the profile from the walls.
@@ -327,14 +333,9 @@ def report(rows):
                 style = "o-" if k < 10 else "s--"  # the colour cycle has 10
                 line, = ax.plot([d / (4 * w["width"]) for d in w["distance"]], w["vf"], style, ms=3, label=family)
                 ax.axhline(g[0]["core"], color=line.get_color(), lw=0.6, ls=":")
-            ax.set_xlabel("distance from the walls / r_max (shells of r_max / 4)")
-            ax.set_ylabel("solid fraction in the shell (dotted: the core)")
-            ax.set_title(f"{dimension}D wall layers, defaults (seed 1)")
-            ax.grid(alpha=0.3)
-            ax.legend(fontsize=7)
-        fig.tight_layout()
-        fig.savefig(HERE / "wall_layers.png", dpi=110)
-        plt.close(fig)
+            decorate(ax, "distance from the walls / r_max (shells of r_max / 4)", "solid fraction in the shell (dotted: the core)",
+                  f"{dimension}D wall layers, defaults (seed 1)")
+        save(fig, "wall_layers.png")
 
     text = "\n".join(out) + "\n"
     (HERE / "measured.md").write_text(text)
