@@ -18,9 +18,11 @@
 #include "cli/failure_report.hpp"
 #include "cli/pack_command.hpp"
 #include "cli/study_command.hpp"
+#include "cli/usage_error.hpp"
 #include "cli/validate_command.hpp"
 #include "core/io/scene_override.hpp"
 #include "core/io/temp_file_registry.hpp"
+#include "core/io/text_excerpt.hpp"
 #include "frontpack/version.hpp"
 #ifdef FRONTPACK_WITH_MPI
 #include "cli/mpi_exchange.hpp"
@@ -97,6 +99,16 @@ int run(int argc, char** argv) {
   // Read as text and converted here: CLI11 would wrap "-1" round to 2^64-1, clamp a number past
   // 2^64-1 and read "042" as octal 34, where the scene's `seed: 042` is 42. Decimal digits only.
   std::string seed_text;
+  // NonNegativeNumber let "nan" through: a tolerance every comparison fails against.
+  const CLI::Validator tolerance_value(
+      [](const std::string& v) {
+        double t = 0;
+        const auto res = std::from_chars(v.data(), v.data() + v.size(), t);
+        if (res.ec != std::errc() || res.ptr != v.data() + v.size() || !(t >= 0 && t < 1))
+          return "a tolerance is a number in [0, 1), relative to the smaller radius of each pair; got '" + fp::excerpt(v) + "'";
+        return std::string();
+      },
+      "TOL");
   const CLI::Validator decimal_seed(
       [](const std::string& v) {
         std::uint64_t seed = 0;
@@ -145,7 +157,7 @@ int run(int argc, char** argv) {
   validate_cmd->add_option("--format", check.format, "format of PACKING (default: from its extension)");
   validate_cmd->add_option("--tolerance", check.tolerance,
                            "overlap allowed, relative to the smaller radius of each pair (default: the scene's contact_tolerance)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(tolerance_value);
   validate_cmd->add_option("--ks-alpha", check.ks_alpha, "level of the radii test (K-S; chi-square for a discrete law, exact match for a constant one): "
                            "the radii fail when its p-value is below this (default as pack: 0.001, or 0 (the range only) for the voids' own radii of method tet_mesh or densify radii: fit)")
       ->check(CLI::Range(0.0, 1.0));
@@ -166,7 +178,7 @@ int run(int argc, char** argv) {
   analyze_cmd->add_option("--json", an.json_path, "write every figure as JSON to OUT");
   analyze_cmd->add_option("--plots", an.plots_dir, "draw PNG figures into DIR (needs python3-matplotlib)");
   analyze_cmd->add_option("--tolerance", an.tolerance, "contact tolerance relative to min(ri, rj)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(tolerance_value);
   analyze_cmd->add_option("--python", an.python, "interpreter with matplotlib (default /usr/bin/python3)");
   analyze_cmd->add_option("-j,--threads", an.threads,
                           "threads (default 0: every hardware thread); the figures are the same for every count")
@@ -189,8 +201,11 @@ int run(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);  // prints help/version or the usage error
-    return (code == 0) ? 0 : 2;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    std::string command;
+    for (const CLI::App* sub : app.get_subcommands()) command = sub->get_name();
+    std::cerr << "frontpack: error: " << fp::usage_error_text(e, command) << "\n";
+    return 2;
   }
   if (validate_cmd->parsed()) return fp::run_validate_command(check);
   if (densify_cmd->parsed()) {

@@ -46,18 +46,18 @@ bool is_scene_key(const std::string& key) { return !key_steps(key).empty(); }
 SceneOverride scene_override_argument(const std::string& arg) {
   const std::size_t eq = arg.find('=');
   if (eq == std::string::npos)
-    throw std::invalid_argument("--set " + arg + ": expected KEY=VALUE (a dotted scene key, e.g. packer.front=fifo)");
+    throw std::invalid_argument("--set " + excerpt(arg) + ": expected KEY=VALUE (a dotted scene key, e.g. packer.front=fifo)");
   SceneOverride o;
   o.key = arg.substr(0, eq);
   o.value = arg.substr(eq + 1);
-  if (!is_scene_key(o.key)) throw std::invalid_argument("--set " + arg + ": '" + o.key + "' is not a scene key (" + kSceneKeyForm + ")");
-  o.origin.file = "--set " + arg;
+  if (!is_scene_key(o.key)) throw std::invalid_argument("--set " + excerpt(arg) + ": '" + excerpt(o.key) + "' is not a scene key (" + kSceneKeyForm + ")");
+  o.origin.file = "--set " + excerpt(arg);
   return o;
 }
 
 std::string describe_overrides(const std::vector<SceneOverride>& overrides) {
   std::string s;
-  for (const auto& o : overrides) s += (s.empty() ? "" : ", ") + o.key + "=" + o.value;
+  for (const auto& o : overrides) s += (s.empty() ? "" : ", ") + excerpt(o.key + "=" + o.value);
   return s;
 }
 
@@ -77,9 +77,11 @@ void apply_overrides(YAML::Node& doc, const std::vector<SceneOverride>& override
     if (steps.empty()) fail(std::string("not a scene key (") + kSceneKeyForm + ")");
     YAML::Node value;
     try {
-      value = YAML::Load(o.value);
+      std::vector<YAML::Node> docs = YAML::LoadAll(o.value);
+      if (docs.size() > 1) fail("the value holds a second YAML document (after '---'): give one value");
+      if (!docs.empty()) value = docs[0];
     } catch (const YAML::Exception& e) {
-      fail("the value '" + o.value + "' is not YAML: " + e.msg);
+      fail("the value '" + excerpt(o.value) + "' is not YAML: " + e.msg);
     }
     if (!value.IsDefined() || value.IsNull()) fail("no value given (write KEY=VALUE)");
     if (!doc.IsMap()) fail("the scene is not a mapping of keys");

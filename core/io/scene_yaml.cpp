@@ -258,7 +258,7 @@ std::pair<double, double> bounds(const Map& m, const std::string& why) {
   const double lo = m.get("min", why).positive();
   const Value max = m.get("max", why);
   const double hi = max.positive();
-  if (!(lo < hi)) max.fail("must be greater than min (min " + m.get("min").node().Scalar() + ", max " + max.node().Scalar() + ")");
+  if (!(lo < hi)) max.fail("must be greater than min (min " + m.get("min").node().Scalar() + ", max " + excerpt(max.node().Scalar()) + ")");
   return {lo, hi};
 }
 
@@ -327,21 +327,21 @@ const Keys kMinimisationAlgorithms = {"newton", "slsqp", "lbfgs", "nelder-mead",
 /// A count of particles (N0): a positive integer, 1e6 written as a float too.
 std::uint64_t particle_count(const Value& x) {
   const std::uint64_t n = x.unsigned_integer(true);
-  if (n == 0) x.fail("must be a positive integer (got " + x.node().Scalar() + ")");
+  if (n == 0) x.fail("must be a positive integer (got " + excerpt(x.node().Scalar()) + ")");
   return n;
 }
 
 /// A solid fraction (phi0): in (0, 1).
 double solid_fraction(const Value& x) {
   const double phi = x.number();
-  if (!(phi > 0 && phi < 1)) x.fail("must be in (0, 1) (got " + x.node().Scalar() + ")");
+  if (!(phi > 0 && phi < 1)) x.fail("must be in (0, 1) (got " + excerpt(x.node().Scalar()) + ")");
   return phi;
 }
 
 /// An overlap allowance epsilon, times r_min: in [0, 1).
 double overlap_epsilon(const Value& x) {
   const double e = x.number();
-  if (!(e >= 0 && e < 1)) x.fail("must be in [0, 1): the overlap allowed, times r_min (got " + x.node().Scalar() + ")");
+  if (!(e >= 0 && e < 1)) x.fail("must be in [0, 1): the overlap allowed, times r_min (got " + excerpt(x.node().Scalar()) + ")");
   return e;
 }
 
@@ -350,7 +350,7 @@ int contact_count(const Value& x, int most) {
   const std::uint64_t z = x.unsigned_integer();
   if (z < 1 || z > static_cast<std::uint64_t>(most))
     x.fail("must be an integer from 1 to " + std::to_string(most) + " in " + std::to_string(most - 1) + "D (got " +
-           x.node().Scalar() + ")");
+           excerpt(x.node().Scalar()) + ")");
   return static_cast<int>(z);
 }
 
@@ -361,13 +361,13 @@ void parse_minimisation(const Value& v, MinimisationOptions& o) {
   if (auto x = m.find("gap_tolerance")) {
     const double t = x->number();
     if (!(t > 0 && t < 0.1))
-      x->fail("must be in (0, 0.1): it is relative to the particle size (got " + x->node().Scalar() + ")");
+      x->fail("must be in (0, 0.1): it is relative to the particle size (got " + excerpt(x->node().Scalar()) + ")");
     o.gap_tolerance = t;
   }
   if (auto x = m.find("max_evaluations")) {
     const std::uint64_t n = x->unsigned_integer(true);
     if (n < 10 || n > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
-      x->fail("must be an integer from 10 to " + std::to_string(std::numeric_limits<int>::max()) + " (got " + x->node().Scalar() + ")");
+      x->fail("must be an integer from 10 to " + std::to_string(std::numeric_limits<int>::max()) + " (got " + excerpt(x->node().Scalar()) + ")");
     o.max_evaluations = static_cast<int>(n);
   }
   if (auto x = m.find("polish")) o.polish = x->boolean();
@@ -409,7 +409,7 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
                 "spheres ('particles: {radius: ...}'), which have none");
       const std::uint64_t n = x->unsigned_integer();
       const std::uint64_t least = std::string(key) == "orientation_trials" ? 1 : 0;
-      if (n < least || n > 10000) x->fail("must be an integer from " + std::to_string(least) + " to 10000 (got " + x->node().Scalar() + ")");
+      if (n < least || n > 10000) x->fail("must be an integer from " + std::to_string(least) + " to 10000 (got " + excerpt(x->node().Scalar()) + ")");
       p.*member = static_cast<int>(n);
     }
   if (auto x = m.find("contact_solver")) {
@@ -439,7 +439,7 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
     if (auto x = m.find(key)) {
       if (p.method != "stacking") x->fail("a parameter of the graded stacking: needs 'method: stacking'");
       const std::uint64_t n = x->unsigned_integer();
-      if (n > 1000000) x->fail("must be an integer from 0 to 1000000 (got " + x->node().Scalar() + ")");
+      if (n > 1000000) x->fail("must be an integer from 0 to 1000000 (got " + excerpt(x->node().Scalar()) + ")");
       p.stacking.*member = static_cast<int>(n);
     }
   if (auto x = m.find("order")) {
@@ -450,7 +450,7 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
     if (p.method != "stacking" || !p.stacking.contacts_first)
       x->fail("the share of the list placed in the paper's order before contacts first: needs 'method: stacking, order: contacts_first'");
     const double share = x->number();
-    if (!(share >= 0 && share <= 1)) x->fail("must be a number from 0 to 1 (got " + x->node().Scalar() + ")");
+    if (!(share >= 0 && share <= 1)) x->fail("must be a number from 0 to 1 (got " + excerpt(x->node().Scalar()) + ")");
     p.stacking.random_share = share;
   }
   if (auto x = m.find("voids")) {
@@ -483,14 +483,14 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
   if (auto x = m.find("radius_pool")) {
     const std::uint64_t n = x->unsigned_integer();
     if (n < 1 || n > kMaxRadiusPool)
-      x->fail("must be an integer from 1 to " + std::to_string(kMaxRadiusPool) + " (got " + x->node().Scalar() +
+      x->fail("must be an integer from 1 to " + std::to_string(kMaxRadiusPool) + " (got " + excerpt(x->node().Scalar()) +
               "): each placement sorts the pool, so its cost grows with it (experiments/extremes)");
     p.radius_pool = static_cast<int>(n);
     spots["packer.radius_pool"] = x->spot();
   }
   if (auto x = m.find("contact_tolerance")) {
     const double t = x->number();
-    if (!(t > 0 && t < 1e-3)) x->fail("must be in (0, 1e-3): it is relative to the particle radii (got " + x->node().Scalar() + ")");
+    if (!(t > 0 && t < 1e-3)) x->fail("must be in (0, 1e-3): it is relative to the particle radii (got " + excerpt(x->node().Scalar()) + ")");
     p.contact_tolerance = t;
     // One tolerance for every particle kind: for particle templates it is the minimisation's
     // gap_tolerance (the same setting under the name of the solver that needs it most).
@@ -503,22 +503,22 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
   }
   if (auto x = m.find("grid_cell_factor")) {
     const double f = x->number();
-    if (!(f >= 1)) x->fail("must be >= 1 (got " + x->node().Scalar() + ")");
+    if (!(f >= 1)) x->fail("must be >= 1 (got " + excerpt(x->node().Scalar()) + ")");
     p.grid_cell_factor = f;
   }
   if (auto x = m.find("hierarchical_grid_ratio")) {
     const double f = x->number();
-    if (!(f > 1)) x->fail("must be > 1 (got " + x->node().Scalar() + ")");
+    if (!(f > 1)) x->fail("must be > 1 (got " + excerpt(x->node().Scalar()) + ")");
     p.hierarchical_grid_ratio = f;
   }
   if (auto x = m.find("threads")) {
     const std::uint64_t n = x->unsigned_integer();
-    if (n > kMaxThreads) x->fail("must be an integer from 0 (every hardware thread) to " + std::to_string(kMaxThreads) + " (got " + x->node().Scalar() + ")");
+    if (n > kMaxThreads) x->fail("must be an integer from 0 (every hardware thread) to " + std::to_string(kMaxThreads) + " (got " + excerpt(x->node().Scalar()) + ")");
     p.threads = static_cast<int>(n);
   }
   if (auto x = m.find("block_edge")) {
     const double e = x->number();
-    if (!(e > 0 && std::isfinite(e))) x->fail("must be a positive length (got " + x->node().Scalar() + ")");
+    if (!(e > 0 && std::isfinite(e))) x->fail("must be a positive length (got " + excerpt(x->node().Scalar()) + ")");
     p.block_edge = e;
     spots["packer.block_edge"] = x->spot();
   }
@@ -554,7 +554,7 @@ double parse_target(const Value& v) {
   if (phi) return solid_fraction(*phi);
   if (n) return 1 - solid_fraction(*n);
   const double ratio = e->number();
-  if (!(ratio > 0 && std::isfinite(ratio))) e->fail("must be a positive number (got " + e->node().Scalar() + ")");
+  if (!(ratio > 0 && std::isfinite(ratio))) e->fail("must be a positive number (got " + excerpt(e->node().Scalar()) + ")");
   return 1 / (1 + ratio);
 }
 
@@ -567,14 +567,14 @@ void parse_densify(const Value& v, int dimension, bool shapes, const RadiusDistr
   if (auto x = m.find("radii")) d.radii = x->choice({"distribution", "fit"}) == "fit" ? VoidRadii::Fit : VoidRadii::Distribution;
   if (auto x = m.find("radius_pool")) {
     const std::uint64_t n = x->unsigned_integer();
-    if (n > 1000000) x->fail("must be an integer from 0 (half the square root of the packing's count) to 1000000 (got " + x->node().Scalar() + ")");
+    if (n > 1000000) x->fail("must be an integer from 0 (half the square root of the packing's count) to 1000000 (got " + excerpt(x->node().Scalar()) + ")");
     d.radius_pool = static_cast<int>(n);
   }
   if (auto x = m.find("overlap")) d.overlap = overlap_epsilon(*x);
   if (auto x = m.find("z_min")) d.z_min = contact_count(*x, dimension + 1);
   if (auto x = m.find("rounds")) {
     const std::uint64_t n = x->unsigned_integer();
-    if (n > 1000000) x->fail("must be an integer from 0 (until a round adds nothing) to 1000000 (got " + x->node().Scalar() + ")");
+    if (n > 1000000) x->fail("must be an integer from 0 (until a round adds nothing) to 1000000 (got " + excerpt(x->node().Scalar()) + ")");
     d.rounds = static_cast<int>(n);
   }
   if (auto x = m.find("volume_fraction")) d.target_volume_fraction = solid_fraction(*x);
@@ -599,7 +599,7 @@ void parse_least_squares(const Value& v, bool shapes, LeastSquaresOptions& o) {
   const auto count = [](const Value& x, std::uint64_t lo, std::uint64_t hi) {
     const std::uint64_t k = x.unsigned_integer();
     if (k < lo || k > hi)
-      x.fail("must be an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + " (got " + x.node().Scalar() + ")");
+      x.fail("must be an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + " (got " + excerpt(x.node().Scalar()) + ")");
     return static_cast<int>(k);
   };
   if (auto x = m.find("evaluations")) o.evaluations = count(*x, 1, 1000000);
@@ -608,12 +608,12 @@ void parse_least_squares(const Value& v, bool shapes, LeastSquaresOptions& o) {
   if (auto x = m.find("boundary")) o.boundary = x->boolean();
   if (auto x = m.find("edge_gap")) {
     const double g = x->number();
-    if (!(g >= 0 && std::isfinite(g))) x->fail("must be a number >= 0 (0: every edge; got " + x->node().Scalar() + ")");
+    if (!(g >= 0 && std::isfinite(g))) x->fail("must be a number >= 0 (0: every edge; got " + excerpt(x->node().Scalar()) + ")");
     o.edge_gap = g;
   }
   if (auto x = m.find("tolerance")) {
     const double t = x->number();
-    if (!(t > 0 && t <= 0.01)) x->fail("must be a number in (0, 0.01] (got " + x->node().Scalar() + ")");
+    if (!(t > 0 && t <= 0.01)) x->fail("must be a number in (0, 0.01] (got " + excerpt(x->node().Scalar()) + ")");
     o.tolerance = t;
   }
 }
@@ -799,7 +799,7 @@ OrientationSpec parse_orientation(const Value& v) {
     if (kappa) {
       o.kappa = kappa->number();
       if (!(std::abs(o.kappa) <= kMaxConcentration))
-        kappa->fail("must be within [-1000, 1000] (got " + kappa->node().Scalar() + "); for all particles alike, give a fixed orientation");
+        kappa->fail("must be within [-1000, 1000] (got " + excerpt(kappa->node().Scalar()) + "); for all particles alike, give a fixed orientation");
       if (o.kind == OrientationKind::Fisher && o.kappa < 0)
         kappa->fail("fisher's kappa must be >= 0 (the law points the axis along 'axis'; reverse the axis instead)");
     } else {
@@ -999,7 +999,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name, const
          "material", "output"});
     const Value dim = root.get("dimension", "2 or 3");
     const std::uint64_t d = dim.unsigned_integer();
-    if (d != 2 && d != 3) dim.fail("must be 2 or 3 (got " + dim.node().Scalar() + ")");
+    if (d != 2 && d != 3) dim.fail("must be 2 or 3 (got " + excerpt(dim.node().Scalar()) + ")");
     scene.dimension = static_cast<int>(d);
     if (auto s = root.find("seed")) scene.seed = s->unsigned_integer();
     if (scene.dimension == 3) parse_body<3>(root, scene, ctx);
@@ -1029,7 +1029,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name, const
       const Value rho = material.get("density", "the particles' material density (mass per unit volume)");
       scene.density = rho.number();
       if (!(scene.density > 0) || !std::isfinite(scene.density))
-        rho.fail("must be a positive number: mass per unit volume of the scene's length unit (got " + rho.node().Scalar() + ")");
+        rho.fail("must be a positive number: mass per unit volume of the scene's length unit (got " + excerpt(rho.node().Scalar()) + ")");
     }
     if (auto o = root.find("output")) scene.outputs = parse_outputs(*o);
   } catch (const YAML::Exception& e) {  // not expected: every access is checked first

@@ -22,6 +22,7 @@
 #include "core/io/scene.hpp"
 #include "core/io/scene_error.hpp"
 #include "core/io/scene_override.hpp"
+#include "core/io/text_excerpt.hpp"
 
 namespace fp::yaml_document {
 
@@ -67,7 +68,7 @@ inline bool contains(const Keys& keys, const std::string& k) { return std::find(
 
 inline std::string shown(const YAML::Node& n) {
   if (!n.IsDefined() || n.IsNull()) return "nothing";
-  if (n.IsScalar()) return n.Tag() == "!" ? "the string \"" + n.Scalar() + "\"" : "'" + n.Scalar() + "'";
+  if (n.IsScalar()) return n.Tag() == "!" ? "the string \"" + excerpt(n.Scalar()) + "\"" : "'" + excerpt(n.Scalar()) + "'";
   if (n.IsSequence()) return "a list";
   return "a mapping";
 }
@@ -115,7 +116,12 @@ inline YAML::Mark document_start() {
 inline YAML::Node load_document(const Context& ctx, const std::string& text, const std::string& what, const std::string& empty) {
   YAML::Node doc;
   try {
-    doc = YAML::Load(text);
+    // Every document, so that a second one (after '---') is refused rather than ignored.
+    std::vector<YAML::Node> docs = YAML::LoadAll(text);
+    if (docs.size() > 1)
+      ctx.fail(docs[1].Mark(), "", "a second YAML document (after '---'): the " + what + " file holds one document; "
+               "remove the '---' line and what follows it, or merge it into the first");
+    if (!docs.empty()) doc = docs[0];
   } catch (const YAML::Exception& e) {
     ctx.fail(e.mark, "", "YAML syntax error: " + e.msg);
   } catch (const std::bad_alloc&) {
@@ -151,15 +157,15 @@ class Value {
     double v = 0;
     const auto res = std::from_chars(s.data(), s.data() + s.size(), v);
     if (s.empty() || res.ec != std::errc() || res.ptr != s.data() + s.size()) {
-      if (res.ec == std::errc::result_out_of_range) fail("number out of range (got " + node_.Scalar() + ")");
+      if (res.ec == std::errc::result_out_of_range) fail("number out of range (got " + excerpt(node_.Scalar()) + ")");
       fail("expected a number, got " + shown(node_));
     }
-    if (!std::isfinite(v)) fail("must be a finite number (got " + node_.Scalar() + ")");
+    if (!std::isfinite(v)) fail("must be a finite number (got " + excerpt(node_.Scalar()) + ")");
     return v;
   }
   double positive() const {
     const double v = number();
-    if (!(v > 0)) fail("must be positive (got " + node_.Scalar() + ")");
+    if (!(v > 0)) fail("must be positive (got " + excerpt(node_.Scalar()) + ")");
     return v;
   }
   /// Non-negative integer. With `float_notation`, "1e6" or "1000.0" are accepted when exact.
@@ -170,7 +176,7 @@ class Value {
     std::uint64_t v = 0;
     const auto res = std::from_chars(s.data(), s.data() + s.size(), v);
     if (!s.empty() && res.ec == std::errc() && res.ptr == s.data() + s.size()) return v;
-    if (res.ec == std::errc::result_out_of_range) fail("integer out of range 0 .. 2^64-1 (got " + node_.Scalar() + ")");
+    if (res.ec == std::errc::result_out_of_range) fail("integer out of range 0 .. 2^64-1 (got " + excerpt(node_.Scalar()) + ")");
     if (float_notation) {
       const double d = number();
       if (d >= 0 && d < 0x1.0p53 && d == std::floor(d)) return static_cast<std::uint64_t>(d);

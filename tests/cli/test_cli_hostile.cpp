@@ -497,6 +497,40 @@ void expect_killed_run_leaves_nothing(int sig) {
 
 TEST(CliHostileSignals, SigtermWhileWritingLeavesNoTemporary) { expect_killed_run_leaves_nothing(SIGTERM); }
 
+// The command line's own refusals in frontpack's words: one "frontpack: error:" line, the
+// option named, a long value cut to its first 80 characters; nothing written.
+TEST(CliHostileParser, RefusalsInOurWords) {
+  expect_refused(with_scene(), "pack s.yaml -o a.csv -o b.csv", 2, {"frontpack: error: --output is given 2 times", "'output:' list"});
+  expect_refused(with_scene(), "pack", 2, {"frontpack: error: missing the argument SCENE"});
+  expect_refused(with_scene(), "pack s.yaml extra", 2, {"frontpack: error: unexpected argument extra", "frontpack pack --help"});
+  expect_refused(with_scene(), "pack s.yaml --nonsense", 2, {"frontpack: error: unexpected argument --nonsense"});
+  expect_refused(with_scene(), "pack s.yaml -j 99999", 2, {"frontpack: error: --threads must be from 0 to 4096 (got 99999)"});
+  expect_refused(with_scene(), "validate old.csv", 2, {"frontpack: error: missing the option --scene"});
+  for (const char* bad : {"nan", "-1", "inf", "1e400", "0.5x"})
+    expect_refused(with_scene(), std::string("validate old.csv --scene s.yaml --tolerance ") + bad, 2,
+                   {"frontpack: error: --tolerance", "a number in [0, 1)"});
+  expect_refused(with_scene(), "analyze old.csv --tolerance nan", 2, {"frontpack: error: --tolerance"});
+}
+
+TEST(CliHostileParser, LongValuesAreCut) {
+  const std::string x(100000, 'x');  // below one argument's limit (128 KiB)
+  for (const std::string& arg : {"--set " + x, "--set seed=" + x, "--set 'seed=[" + x + "'"}) {
+    TempDir dir;
+    with_scene()(dir.work());
+    const RunResult r = run_frontpack(dir, "pack s.yaml " + arg);
+    EXPECT_EQ(r.exit_code, 2) << arg.substr(0, 20);
+    EXPECT_NE(r.err.find("characters)"), std::string::npos) << r.err.substr(0, 300);
+    EXPECT_LT(r.err.size(), 1000u) << r.err.substr(0, 300);
+  }
+}
+
+TEST(CliHostileParser, SecondYamlDocumentsAreRefused) {
+  expect_refused(with_scene("---\nseed: 2\n"), "pack s.yaml -o new.csv", 2,
+                 {"s.yaml:5:1", "a second YAML document (after '---')"});
+  expect_refused(with_scene(), "pack s.yaml -o new.csv --set 'seed=1\n---\nseed: 2'", 2,
+                 {"second YAML document", "give one value"});
+}
+
 TEST(CliHostileSignals, SigintWhileWritingLeavesNoTemporary) { expect_killed_run_leaves_nothing(SIGINT); }
 
 }  // namespace
