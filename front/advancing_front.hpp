@@ -81,6 +81,7 @@ class AdvancingFront {
   Result run(const ProgressFn& progress = {}) {
     using clock = std::chrono::steady_clock;
     const auto t0 = clock::now();
+    started_ = t0;
     Result res;
     model_.attach(res, stop_);
     auto elapsed = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
@@ -123,6 +124,16 @@ class AdvancingFront {
 
  private:
   using FrontEntry = front_parts::FrontEntry;
+
+  /// Shapes: the time stop is also checked before every solve (a pick among clusters of 50
+  /// members took over a minute: a 20 s stop ended at 98 s); a sphere's pick is short enough for
+  /// the main loop's check alone.
+  bool time_up() const {
+    if constexpr (Model::kClockEvery != 1) return false;
+    else
+      return stop_.time_limit_seconds &&
+             std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count() >= *stop_.time_limit_seconds;
+  }
   using Neighbour = front_parts::Neighbour;
 
   Draft draw(Result& res) {
@@ -637,6 +648,7 @@ class AdvancingFront {
   /// The pocket of `best` (s0 and its bodies i, j) solved again for the draft's current
   /// orientation (the reframe, the pocket trials, the roll); the solutions' count.
   int solve_again(const Draft& d, const Found& best, std::span<Placement<D>> out, Result& res) {
+    if (time_up()) return 0;
     model_.orient(d);
     ++res.counters.solves;
     return model_.solve(best.i, best.j, out);
@@ -708,6 +720,7 @@ class AdvancingFront {
       return keep_first || (rank == 0 && key <= lower_bound);
     };
     auto consider = [&](int i, int j) -> bool {  // returns true to end the scan
+      if (time_up()) return true;
       ++res.counters.solves;
       const int m = model_.solve(i, j, std::span<Placement<D>>(out.data(), out.size()));
       const int rank = (bodies_[i].is_wall() || bodies_[j].is_wall()) ? 0 : 1;
@@ -772,6 +785,7 @@ class AdvancingFront {
   std::priority_queue<FrontEntry> heap_;
   std::vector<int> list_;
   std::size_t fifo_head_ = 0;
+  std::chrono::steady_clock::time_point started_;  ///< when run() began (time_up)
   std::vector<Draft> pool_;
   std::vector<int> order_;
   std::vector<double> failed_radius_;  // per particle: smallest pooled radius that failed there

@@ -129,6 +129,10 @@ ShapePrototype<D> cluster_prototype(const ShapeParameters& p) {
     radii = r.list("radii", "the member radii, one per centre");
   }
   if (centers.empty()) r.fail("centers", "a cluster needs at least one member");
+  if (centers.size() > static_cast<std::size_t>(ClusterShape<D>::kMaxMembers))
+    r.fail("centers", "at most " + std::to_string(ClusterShape<D>::kMaxMembers) + " members (got " + std::to_string(centers.size()) +
+                          "): the union's volume and every contact problem grow faster than the square of the members' "
+                          "count; a shape of many balls packs as the convex polyhedron of their hull, or as fewer, larger members");
   if (radii.size() != centers.size())
     r.fail("radii", "has " + std::to_string(radii.size()) + " radii for " + std::to_string(centers.size()) +
                         " centres (one radius per centre)");

@@ -5,6 +5,8 @@
 // and pass their validation.
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include <string>
 
 #include "cli_test_util.hpp"
@@ -148,6 +150,43 @@ TEST(CliLimits, APoolTheRuleAcceptsPassesTheValidation) { expect_packs_and_valid
 TEST(CliLimits, TheDefaultPoolInAContainerOfAFewParticles) { expect_packs_and_validates(box_scene("0.06")); }
 
 TEST(CliLimits, AHugeContainerWithAStopCountPacks) { expect_packs_and_validates(box_scene("1e17") + "stop: {particles: 2000}\n"); }
+
+/// A cluster template of n members spread at random (fixed seed) over a cube of side 2.
+std::string cluster_scene(int n, const std::string& stop) {
+  std::string centers, radii;
+  std::uint64_t x = 12345;
+  auto next = [&] {  // a small LCG: the scene is the same on every machine
+    x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(x >> 11) * 0x1.0p-53;
+  };
+  for (int i = 0; i < n; ++i) {
+    centers += std::string(i ? ", " : "") + "[" + std::to_string(2 * next() - 1) + ", " + std::to_string(2 * next() - 1) + ", " +
+               std::to_string(2 * next() - 1) + "]";
+    radii += std::string(i ? ", " : "") + std::to_string(0.2 + 0.2 * next());
+  }
+  return "dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [6, 6, 6]}\nstop: " + stop +
+         "\nparticles:\n  - shape: cluster\n    centers: [" + centers + "]\n    radii: [" + radii +
+         "]\n    size: {distribution: uniform, min: 0.5, max: 1}\n";
+}
+
+TEST(CliLimits, ClusterMembersAreLimited) {
+  expect_refused(scene(cluster_scene(201, "{time: 1}")), "pack s.yaml -o old.csv", 2,
+                 {"key 'particles[0].centers'", "at most 200 members (got 201)"});
+}
+
+// Each pick of clusters of 20 members takes seconds of contact problems: the time stop is
+// checked before every solve, not only between picks (a 20 s stop once ended at 98 s).
+TEST(CliLimits, ATimeStopEndsAPickOfLargeClusters) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", cluster_scene(20, "{time: 1}"));
+  const auto t0 = std::chrono::steady_clock::now();
+  const RunResult r = run_frontpack(dir, "pack s.yaml -o p.csv --record r.json");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("time limit"), std::string::npos) << r.out;
+  EXPECT_LT(record_number(read_bytes(dir.work() / "r.json"), "pack"), 1.5) << "the pack phase (timings.pack) overran the 1 s stop";
+  EXPECT_LT(seconds, 20.0);  // the whole process: the scene's check, the validation, the writing
+}
 
 }  // namespace
 }  // namespace fptest
