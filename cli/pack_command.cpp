@@ -24,6 +24,7 @@
 #include "core/io/run_record.hpp"
 #include "core/io/scene_yaml.hpp"
 #include "front/block_exchange.hpp"
+#include "front/container_too_small.hpp"
 #include "shapes/io/shape_packing_writers.hpp"
 
 namespace fp {
@@ -154,6 +155,13 @@ int run_pack_command(const PackCommandOptions& o) {
     if (!scene.particle_templates.empty())  // non-spherical particles: the general front
       return scene.dimension == 2 ? run<2, ShapePack<2>>(scene, o) : run<3, ShapePack<3>>(scene, o);
     return scene.dimension == 2 ? run<2, SpherePack<2>>(scene, o) : run<3, SpherePack<3>>(scene, o);
+  } catch (const ContainerTooSmall& e) {  // the scene's mistake, found when the front starts: bad input
+    const SourceSpot at = scene.spot("particles");
+    try {
+      throw SceneError(at.file, at.line, at.column, at.key, e.what());
+    } catch (...) {
+      return report_failure(2);
+    }
   } catch (...) {
     return report_failure(1);
   }

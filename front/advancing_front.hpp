@@ -47,6 +47,7 @@
 #include "core/geometry/container.hpp"
 #include "core/io/scene.hpp"
 #include "core/sampling/rng.hpp"
+#include "front/container_too_small.hpp"
 #include "front/front_block.hpp"
 #include "front/front_parts.hpp"
 #include "front/radial_frame.hpp"
@@ -287,7 +288,7 @@ class AdvancingFront {
     for (std::size_t q = 0; q < pool_.size(); ++q)
       if (model_.fits(pool_[q], deep) && (k == pool_.size() || radius(pool_[q]) > radius(pool_[k]))) k = q;
     if (k == pool_.size())
-      throw std::runtime_error("the container cannot hold a first particle of (circumscribed) radius " +
+      throw ContainerTooSmall("the container cannot hold a first particle of (circumscribed) radius " +
                                std::to_string(radius(pool_[0])) +
                                " at its interior point: container too small for the size distribution");
     start_cluster(res, seed_point_, k);

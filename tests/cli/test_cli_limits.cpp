@@ -188,5 +188,16 @@ TEST(CliLimits, ATimeStopEndsAPickOfLargeClusters) {
   EXPECT_LT(seconds, 20.0);  // the whole process: the scene's check, the validation, the writing
 }
 
+// Shapes the container cannot hold are the scene's mistake: exit 2 at the scene's particles.
+TEST(CliLimits, ShapesTooBigForTheBoxAreBadInput) {
+  const std::string box = "dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [1, 1, 1]}\nparticles:\n";
+  expect_refused(scene(box + "  - {shape: polyhedron, preset: cube, size: {distribution: uniform, min: 2, max: 3}}\n"),
+                 "pack s.yaml -o old.csv", 2, {"s.yaml:4:3: key 'particles'", "cannot hold a first particle"});
+  // A flat tetrahedron sized on its inscribed radius is huge: the same refusal, with the key.
+  expect_refused(scene(box + "  - {shape: polyhedron, vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1e-9]], "
+                             "size_on: inscribed_radius, size: {distribution: uniform, min: 0.3, max: 0.5}}\n"),
+                 "pack s.yaml -o old.csv", 2, {"key 'particles'", "cannot hold a first particle"});
+}
+
 }  // namespace
 }  // namespace fptest
