@@ -94,9 +94,10 @@ int run(const Scene& scene, const PackCommandOptions& o, Make&& make) {
 
   const RunRecord rec = pack_record<D, Kind>(scene, res, check, check_seconds);
 
-  const double write_seconds = write_outputs(scene, o.record_path, rec, [&](OutputFormat format, const std::string& path) {
-    write_packing<D>(format, path, P, rec);
-  });
+  std::vector<std::string> spared;
+  const double write_seconds = write_outputs(
+      scene, o.record_path, rec, [&](OutputFormat format, const std::string& path) { write_packing<D>(format, path, P, rec); },
+      !v.ok, &spared);
 
   if (!o.quiet) {
     print_run_header<D>(scene, container);
@@ -108,10 +109,12 @@ int run(const Scene& scene, const PackCommandOptions& o, Make&& make) {
     std::printf("  validation     %s\n", v.one_line().c_str());
     std::printf("  time           pack %.3f s (%.1f particles/s), %s %.3f s, write %.3f s\n", res.seconds, rate,
                 check.timing_name.c_str(), check_seconds, write_seconds);
-    print_output_lines(scene, o.record_path);
+    print_output_lines(scene, o.record_path, spared);
   }
   if (!v.ok) {
     std::fprintf(stderr, "frontpack: error: the packing failed validation:\n%s\n", v.summary().c_str());
+    for (const std::string& path : spared)
+      std::fprintf(stderr, "frontpack: '%s' is not written: it holds a file, which is kept\n", path.c_str());
     return 3;
   }
   return 0;

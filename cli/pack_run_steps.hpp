@@ -2,10 +2,14 @@
 // The steps of `frontpack pack` that are the same for a scene of spheres and one of shapes (the
 // commands differ only in how they pack, check and summarise): packing with the progress line,
 // writing every output and the run record together, and the summary's last lines.
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <string>
+#include <system_error>
+#include <vector>
 
 #include "cli/failure_report.hpp"
 #include "cli/progress_line.hpp"
@@ -29,22 +33,36 @@ auto pack_with_progress(bool shown, Pack&& pack) {
 }
 
 /// Every output of the scene (`write_one(format, path)`) and the run record (if `record_path`),
-/// all or none of them; returns the seconds it took.
+/// all or none of them; returns the seconds it took. With `spare_existing` (a packing that failed
+/// its validation) a path that already holds a file is left as it is (a good packing of an
+/// earlier run is not replaced by a bad one) and added to *spared; the others are written, the
+/// verdict in the record.
 template <class WriteOne>
-double write_outputs(const Scene& scene, const std::string& record_path, const RunRecord& record, WriteOne&& write_one) {
+double write_outputs(const Scene& scene, const std::string& record_path, const RunRecord& record, WriteOne&& write_one,
+                     bool spare_existing = false, std::vector<std::string>* spared = nullptr) {
   const auto start = std::chrono::steady_clock::now();
   const Activity writing("writing the outputs of '" + scene.source_path + "'");
+  const auto may_write = [&](const std::string& path) {
+    std::error_code ec;
+    if (!spare_existing || !std::filesystem::exists(path, ec)) return true;
+    if (spared) spared->push_back(path);
+    return false;
+  };
   AtomicFileGroup all_or_nothing;
-  for (const OutputSpec& out : scene.outputs) write_one(parse_output_format(out.format), out.path);
-  if (!record_path.empty()) write_run_record(record_path, record);
+  for (const OutputSpec& out : scene.outputs)
+    if (may_write(out.path)) write_one(parse_output_format(out.format), out.path);
+  if (!record_path.empty() && may_write(record_path)) write_run_record(record_path, record);
   all_or_nothing.commit();
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// The summary's last lines: each output and the run record.
-inline void print_output_lines(const Scene& scene, const std::string& record_path) {
-  for (const OutputSpec& out : scene.outputs) std::printf("  output         %s (%s)\n", out.path.c_str(), out.format.c_str());
-  if (!record_path.empty()) std::printf("  run record     %s\n", record_path.c_str());
+/// The summary's last lines: each output and the run record (those in `spared` left unwritten).
+inline void print_output_lines(const Scene& scene, const std::string& record_path, const std::vector<std::string>& spared = {}) {
+  const auto note = [&](const std::string& path) {
+    return std::find(spared.begin(), spared.end(), path) != spared.end() ? "; not written: the file there is kept" : "";
+  };
+  for (const OutputSpec& out : scene.outputs) std::printf("  output         %s (%s%s)\n", out.path.c_str(), out.format.c_str(), note(out.path));
+  if (!record_path.empty()) std::printf("  run record     %s%s\n", record_path.c_str(), note(record_path));
 }
 
 }  // namespace fp

@@ -92,6 +92,22 @@ TEST_F(CliDensify, ASplitLawKeepsItsProportionsOrSaysItCouldNot) {
   EXPECT_NE(high.err.find("size test"), std::string::npos) << high.err;
 }
 
+// A packing that fails its verdict (exit 3) never replaces a file: the old output stays, a new
+// path (the record here) is written with the verdict in it.
+TEST_F(CliDensify, AFailedVerdictKeepsExistingFiles) {
+  write_bytes(dir.work() / "high.yaml", "dimension: 3\nseed: 4\ncontainer: {type: box, min: [0, 0, 0], max: [0.6, 0.6, 0.6]}\n"
+                                        "particles: {radius: {distribution: uniform, min: 0.01, max: 0.05}}\n"
+                                        "densify: {split: 0.04}\n");
+  write_bytes(dir.work() / "h.csv", "a good packing of an earlier run\n");
+  const RunResult r = run_frontpack(dir, "pack high.yaml -o h.csv --record r.json");
+  EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+  EXPECT_EQ(read_bytes(dir.work() / "h.csv"), "a good packing of an earlier run\n");
+  EXPECT_NE(r.err.find("'h.csv' is not written: it holds a file, which is kept"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("h.csv (csv; not written: the file there is kept)"), std::string::npos) << r.out;
+  const std::string record = read_bytes(dir.work() / "r.json");
+  EXPECT_NE(record.find("\"validation\": \"FAILED"), std::string::npos) << record.substr(0, 2000);
+}
+
 TEST_F(CliDensify, BadInputExitsTwoAndWritesNothing) {
   const auto nothing_new = [&](const RunResult& r, const std::string& what, const std::string& message) {
     EXPECT_EQ(r.exit_code, 2) << what << ": " << r.err;
