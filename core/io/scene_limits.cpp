@@ -83,6 +83,12 @@ void check_run_limits(const Scene& scene, const RunDemand& d, const MemoryBudget
                                    bytes_text(static_cast<double>(memory.bytes)) + " this process may use (" + memory.source +
                                    ")" + remedy + " (about " + num(fits) + " particles fit)");
   }
+  // A target below one particle's solid thins every particle away (a packing of none).
+  if (scene.target_solid_fraction && *scene.target_solid_fraction * d.container_measure < d.mean_particle_measure)
+    fail_at(scene, "target",
+            "a solid fraction of " + num(*scene.target_solid_fraction) + " is " + num(*scene.target_solid_fraction * d.container_measure) +
+                " of the container's " + what + " " + num(d.container_measure) + ", less than one particle (mean " + what + " " +
+                num(d.mean_particle_measure) + "): no particle would be kept; give a larger solid fraction (a smaller porosity or void ratio)");
   // The pool's last radii are never placed, and they are mostly large ones: against N particles
   // they shift the radii's distribution by up to pool / (N + pool).
   const double pool = scene.packer.radius_pool, n = std::max(d.particles, 1.0);

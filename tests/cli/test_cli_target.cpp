@@ -136,6 +136,10 @@ TEST(CliTarget, BadTargetsAreRefusedAndWriteNothing) {
       {"target: {porosity: 1.5}\n", "must be in (0, 1)"},
       {"target: {density: 0.5}\n", "density"},
       {"target: 0.5\n", "target"},
+      // Targets no particle survives: refused with the key, not thinned down to a packing of none.
+      {"target: {solid_fraction: 1e-9}\n", "key 'target': a solid fraction of 1e-09"},
+      {"target: {void_ratio: 1e300}\n", "less than one particle"},
+      {"target: {porosity: 0.9999999999}\n", "no particle would be kept"},
   };
   for (const auto& [extra, message] : cases) {
     write_bytes(dir.work() / "bad.yaml", box_scene(extra, 0.0, 0.2));
