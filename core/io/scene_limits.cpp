@@ -83,6 +83,15 @@ void check_run_limits(const Scene& scene, const RunDemand& d, const MemoryBudget
                                    bytes_text(static_cast<double>(memory.bytes)) + " this process may use (" + memory.source +
                                    ")" + remedy + " (about " + num(fits) + " particles fit)");
   }
+  // The graded stacking makes its whole list before it places any: a list beyond what the
+  // container can hold ran for 22 s (10^5) or out of memory (3 x 10^9) before failing.
+  if (scene.packer.method == "stacking" && scene.stop.max_particles &&
+      static_cast<double>(*scene.stop.max_particles) > d.full_particles)
+    fail_at(scene, "stop.particles",
+            "the graded stacking places a list of " + num(static_cast<double>(*scene.stop.max_particles)) +
+                " particles, more than the container can hold: about " + num(d.full_particles) + " (" + num(d.phi_max) +
+                " x container " + what + " " + num(d.container_measure) + " / mean particle " + what + " " +
+                num(d.mean_particle_measure) + ", the densest packing of equal balls); give fewer, or a target instead");
   // A target below one particle's solid thins every particle away (a packing of none).
   if (scene.target_solid_fraction && *scene.target_solid_fraction * d.container_measure < d.mean_particle_measure)
     fail_at(scene, "target",

@@ -199,5 +199,13 @@ TEST(CliLimits, ShapesTooBigForTheBoxAreBadInput) {
                  "pack s.yaml -o old.csv", 2, {"key 'particles'", "cannot hold a first particle"});
 }
 
+// The graded stacking's list is checked against the container before it is made.
+TEST(CliLimits, AStackingListBeyondTheContainerIsRefused) {
+  const std::string stacking = box_scene("0.1") + "packer: {method: stacking}\nstop: {particles: ";
+  expect_refused(scene(stacking + "100000}\n"), "pack s.yaml -o old.csv", 2,
+                 {"key 'stop.particles'", "the graded stacking places a list of 1e+05 particles, more than the container can hold"});
+  expect_refused(scene(stacking + "3000000000}\n"), "pack s.yaml -o old.csv", 2, {"key 'stop.particles'", "graded stacking"});
+}
+
 }  // namespace
 }  // namespace fptest
