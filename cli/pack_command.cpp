@@ -141,6 +141,12 @@ int run_pack_command(const PackCommandOptions& o) {
     const Activity doing(densify ? "reading packing '" + o.input_path + "'" : "reading scene '" + o.scene_path + "'");
     if (densify) {
       given = read_packing_input(o.input_path, o.input_format, o.scene_path, false, o.scene_overrides);  // refuses a scene of shapes
+      // The stages take the packing given as valid (least squares steps back towards it): it
+      // gets validate's verdict first, and a packing that fails it is bad input.
+      const ValidationReport v = validate_input(given, -1.0, -1.0, o.threads.value_or(0));
+      if (!v.ok)
+        throw InputError("'" + o.input_path + "' is not a valid packing of the scene '" + o.scene_path +
+                         "', so it is not densified (frontpack validate gives this verdict):\n" + v.summary());
       scene = std::move(*given.scene);
     } else {
       scene = load_scene(o.scene_path, o.scene_overrides);

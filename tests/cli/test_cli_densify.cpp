@@ -136,6 +136,24 @@ TEST_F(CliDensify, BadInputExitsTwoAndWritesNothing) {
               "dimension: 2\ncontainer: {type: rectangle, min: [0, 0], max: [0.3, 0.3]}\n"
               "particles: {radius: {distribution: uniform, min: 0.01, max: 0.05}}\n");
   nothing_new(run_frontpack(dir, "densify p.csv --scene flat.yaml -o out.csv"), "dimensions", "3D packing");
+  // A packing that fails validate's verdict is not densified (the least squares once repaired an
+  // overlap silently; the void filling ran on anything and failed at the end, exit 3).
+  const std::pair<const char*, const char*> invalid[] = {
+      {"id,x,y,z,r\n0,0.1,0.1,0.1,0.03\n1,0.11,0.1,0.1,0.03\n", "overlap 0-1"},
+      {"id,x,y,z,r\n0,0.1,0.1,0.1,0.03\n1,5,0.1,0.1,0.03\n", "outside 1"},
+      {"id,x,y,z,r\n0,0.1,0.1,0.1,0.03\n1,nan,0.1,0.1,0.03\n", "non_finite 1"},
+      {"id,x,y,z,r\n0,0.1,0.1,0.1,0.03\n1,0.2,0.2,0.2,0.09\n", "radius_out_of_range 1"},
+      {"id,x,y,z,r\n", "holds no particles"},
+  };
+  write_bytes(dir.work() / "ls.yaml", std::string(kScene) + "least_squares: {radii: fixed}\n");
+  for (const auto& [csv, worst] : invalid) {
+    write_bytes(dir.work() / "bad.csv", csv);
+    for (const char* scene : {"s.yaml", "ls.yaml"}) {
+      const RunResult r = run_frontpack(dir, std::string("densify bad.csv --scene ") + scene + " -o out.csv");
+      nothing_new(r, std::string(worst) + " " + scene, "'bad.csv' is not a valid packing of the scene");
+      EXPECT_NE(r.err.find(worst), std::string::npos) << r.err;
+    }
+  }
 }
 
 }  // namespace
