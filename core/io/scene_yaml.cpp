@@ -241,6 +241,9 @@ ContainerPtr<D> parse_container(const Value& v, const Context& ctx, const std::o
 
 const Keys kDistributionKeys = {"distribution", "value", "min", "max", "mean", "std", "median", "mu",
                                 "sigma", "values", "edges", "weights", "curve", "basis"};
+/// The narrowest spread of a normal or lognormal law, relative to its radii: below it every draw
+/// rounds to the same radius.
+constexpr double kNarrowestLaw = 1e-9;
 const Keys kDistributions = {"constant", "uniform", "normal", "lognormal", "discrete", "histogram", "gradation"};
 
 Keys distribution_keys(const std::string& kind) {
@@ -278,8 +281,14 @@ RadiusDistributionPtr parse_distribution(const Value& v, int dimension) {
   }
   if (kind == "normal") {
     const double mean = m.get("mean").number();
-    const double sd = m.get("std", "standard deviation of the radius").positive();
+    const Value sd_value = m.get("std", "standard deviation of the radius");
+    const double sd = sd_value.positive();
     const auto [lo, hi] = bounds(m, truncation);
+    // Narrower, the draws all round to the mean and the law's CDF jumps there: the radii test
+    // failed a packing of one radius (std 1e-300).
+    if (sd < kNarrowestLaw * std::max(std::abs(mean), hi))
+      sd_value.fail("is below 1e-9 of the radii (got " + excerpt(sd_value.node().Scalar()) + "): that is one radius; write "
+                    "'distribution: constant, value: R'");
     return construct(m, [&] { return std::make_shared<const TruncatedNormalRadius>(mean, sd, lo, hi); });
   }
   if (kind == "lognormal") {
@@ -287,7 +296,11 @@ RadiusDistributionPtr parse_distribution(const Value& v, int dimension) {
     const auto mu = m.find("mu");
     if (median && mu) mu->fail("give either median or mu (= ln median), not both");
     if (!median && !mu) m.get("median", "or mu = ln(median)");
-    const double sigma = m.get("sigma", "standard deviation of ln r").positive();
+    const Value sigma_value = m.get("sigma", "standard deviation of ln r");
+    const double sigma = sigma_value.positive();
+    if (sigma < kNarrowestLaw)
+      sigma_value.fail("is below 1e-9 (got " + excerpt(sigma_value.node().Scalar()) + "): that is one radius; write "
+                       "'distribution: constant, value: R'");
     const auto [lo, hi] = bounds(m, truncation);
     if (median) {
       const double med = median->positive();

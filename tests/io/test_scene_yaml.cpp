@@ -365,6 +365,13 @@ TEST(SceneYamlErrors, NonPositiveSizes) {
   expect_error("dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [1, 1, 1]}\n"
                "particles:\n  radius: {distribution: normal, mean: 0.1, std: -0.01, min: 0.05, max: 0.2}\n",
                4, "particles.radius.std", {"must be positive"});
+  // A spread every draw rounds away is one radius: its law's CDF jumps and the radii test fails.
+  expect_error("dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [1, 1, 1]}\n"
+               "particles:\n  radius: {distribution: normal, mean: 0.1, std: 1e-300, min: 0.05, max: 0.2}\n",
+               4, "particles.radius.std", {"below 1e-9 of the radii (got 1e-300)", "distribution: constant"});
+  expect_error("dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [1, 1, 1]}\n"
+               "particles:\n  radius: {distribution: lognormal, median: 0.1, sigma: 1e-12, min: 0.05, max: 0.2}\n",
+               4, "particles.radius.sigma", {"below 1e-9", "distribution: constant"});
   expect_error(kBox3 + "stop:\n  time: -5\n", 6, "stop.time", {"must be positive"});
   expect_error(kBox3 + "stop:\n  particles: 0\n", 6, "stop.particles", {"positive integer"});
 }
