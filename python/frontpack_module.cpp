@@ -22,9 +22,11 @@
 #include <vector>
 
 #include "cli/pack_api.hpp"
+#include "cli/packing_input.hpp"
 #include "cli/study_command.hpp"
 #include "core/io/analysis_json.hpp"
 #include "core/io/output_format.hpp"
+#include "core/io/output_paths.hpp"
 #include "core/io/packing_writers.hpp"
 #include "core/io/scene_error.hpp"
 #include "core/io/scene_yaml.hpp"
@@ -161,9 +163,18 @@ auto in_scene(const PyPacking& p, const py::object& scene, F&& f) {
   return f(in);
 }
 
-void write_file(const PyPacking& p, const std::string& path, const std::string& format) {
+/// Writes the packing to `path`, checked as the command line checks its outputs first: no
+/// output (nor a side file of one) may be a file the packing was made from (its scene, a mesh)
+/// or another output.
+void write_file(const PyPacking& p, const py::object& where, const std::string& format) {
+  const std::string path = path_of(where);
   const OutputFormat f = format.empty() ? format_from_extension(path) : parse_output_format(format);
   const PackingInput& in = p.in();
+  std::vector<NamedPath> writes{{path, "Packing.write", "output"}};
+  if (in.shapes)  // shape packings write a side file for vtu and lammps
+    for (const std::string& side : companion_paths(f, path))
+      writes.push_back({side, "Packing.write", "the side file of output '" + path + "'"});
+  check_output_paths(writes, in.scene ? scene_reads(*in.scene, "the scene of frontpack.pack") : std::vector<NamedPath>{});
   const py::gil_scoped_release released;
   if (in.shapes) {
     in.dimension == 2 ? write_packing<2>(f, path, in.shapes2, p.run.record) : write_packing<3>(f, path, in.shapes3, p.run.record);
@@ -242,6 +253,8 @@ PYBIND11_MODULE(frontpack, m) {
   m.doc() = "frontpack: dense packings of spheres, disks and shapes by the advancing front (and the methods beside it)";
   m.attr("__version__") = kVersion;
   py::register_exception<SceneError>(m, "SceneError", PyExc_ValueError);
+  // A file that must not be written (it is read, or written twice; no folder): nothing was.
+  py::register_exception<OutputPathError>(m, "OutputPathError", PyExc_ValueError);
 
   py::class_<PyPacking, std::shared_ptr<PyPacking>>(m, "Packing", "A packing made by frontpack.pack, with its run record")
       .def_property_readonly("dimension", [](const PyPacking& p) { return p.in().dimension; })
@@ -301,7 +314,8 @@ PYBIND11_MODULE(frontpack, m) {
                              "the analysis and packer lines of the command line's summary")
       .def_property_readonly("scene_path", [](const PyPacking& p) { return p.in().scene->source_path; })
       .def("write", &write_file, py::arg("path"), py::arg("format") = "",
-           "writes the packing (vtu, yade, lammps, csv, json; default: from the extension), all or nothing")
+           "writes the packing (vtu, yade, lammps, csv, json; default: from the extension), all or nothing; refuses "
+           "(OutputPathError, a ValueError) a path that is its scene or a file the scene reads")
       .def("__repr__", [](const PyPacking& p) {
         return "<frontpack.Packing: " + std::to_string(p.size()) + (p.in().shapes ? " shapes" : " spheres") + ", " +
                std::to_string(p.in().dimension) + "D, scene " + p.in().scene->source_path + ">";

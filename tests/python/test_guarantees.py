@@ -1,0 +1,124 @@
+"""What the Python module promises beyond the numbers (python/frontpack_module.cpp): bad input is
+a clear exception that loses nothing, never a crash.
+
+* No output is an input: Packing.write and frontpack.study refuse (OutputPathError, a
+  ValueError) to write over the scene, a mesh, the study file, and leave them as they were (bytes
+  and inode).
+"""
+import json
+import os
+import subprocess
+
+import pytest
+
+import frontpack
+
+BINARY = os.environ.get("FRONTPACK_BINARY", "frontpack")
+
+BOX = {
+    "dimension": 3,
+    "seed": 1,
+    "container": {"type": "box", "min": [0, 0, 0], "max": [0.15, 0.15, 0.15]},
+    "particles": {"radius": {"distribution": "uniform", "min": 0.01, "max": 0.02}},
+}
+ELLIPSES = {
+    "dimension": 2,
+    "seed": 2,
+    "container": {"type": "rectangle", "min": [0, 0], "max": [3, 3]},
+    "particles": [{"shape": "ellipse", "axes": [1, 0.5], "size": {"distribution": "uniform", "min": 0.5, "max": 1}}],
+}
+
+
+def write_scene(folder, scene, name="s.yaml"):
+    path = folder / name
+    path.write_text(json.dumps(scene, indent=1))
+    return path
+
+
+def state(path):
+    """A file as it is: its bytes and its inode (a file replaced by a rename has a new one)."""
+    st = os.stat(path)
+    return path.read_bytes(), st.st_ino, st.st_dev
+
+
+def cli(*args, cwd):
+    return subprocess.run([BINARY, *map(str, args)], cwd=cwd, capture_output=True, text=True)
+
+
+# --- no output is an input --------------------------------------------------------------------
+
+def test_write_refuses_the_scene_it_was_packed_from(tmp_path, monkeypatch):
+    scene = write_scene(tmp_path, BOX)
+    p = frontpack.pack(scene)
+    before = state(scene)
+    monkeypatch.chdir(tmp_path)
+    link = tmp_path / "link.csv"
+    link.symlink_to("s.yaml")
+    os.link(scene, tmp_path / "hard.csv")
+    for target, fmt in [(scene, "csv"), (str(scene), "csv"), ("s.yaml", "json"), ("./sub/../s.yaml", "csv"),
+                        (link, ""), ("hard.csv", "")]:
+        (tmp_path / "sub").mkdir(exist_ok=True)
+        with pytest.raises(frontpack.OutputPathError, match=r"Packing.write: output '.*' is the scene file .*never writes over what it reads"):
+            p.write(target, format=fmt)
+        assert state(scene) == before, target
+    assert isinstance(frontpack.OutputPathError("x"), ValueError)
+    assert sorted(f.name for f in tmp_path.iterdir()) == ["hard.csv", "link.csv", "s.yaml", "sub"]
+    # Another name is written.
+    p.write(tmp_path / "out.csv")
+    assert (tmp_path / "out.csv").stat().st_size > 0 and state(scene) == before
+
+
+def test_write_refuses_the_mesh_the_container_was_read_from(tmp_path):
+    source = os.path.join(os.path.dirname(__file__), "..", "data", "meshes", "cube.stl")
+    mesh = tmp_path / "cube.stl"
+    mesh.write_bytes(open(source, "rb").read())
+    scene = {"dimension": 3, "container": {"type": "mesh", "file": str(mesh)},
+             "particles": {"radius": {"distribution": "constant", "value": 0.1}}, "stop": {"particles": 10}}
+    p = frontpack.pack(scene)
+    before = state(mesh)
+    with pytest.raises(frontpack.OutputPathError, match=r"is the mesh file"):
+        p.write(mesh, format="csv")
+    assert state(mesh) == before
+
+
+def test_write_refuses_a_side_file_that_is_the_scene(tmp_path):
+    # A packing of shapes written as vtu writes <name>.surfaces.vtu beside it.
+    scene = write_scene(tmp_path, dict(ELLIPSES, stop={"particles": 5}), "p.surfaces.vtu")
+    p = frontpack.pack(scene)
+    before = state(scene)
+    with pytest.raises(frontpack.OutputPathError, match=r"the side file of output '.*p.vtu'.* is the scene file"):
+        p.write(tmp_path / "p.vtu")
+    assert state(scene) == before and not (tmp_path / "p.vtu").exists()
+
+
+def test_write_refuses_a_path_it_cannot_write_and_writes_nothing(tmp_path):
+    p = frontpack.pack(dict(BOX, stop={"particles": 5}))
+    with pytest.raises(frontpack.OutputPathError, match="does not exist"):
+        p.write(tmp_path / "no-such-folder" / "p.csv")
+    with pytest.raises(frontpack.OutputPathError, match="is a folder"):
+        p.write(tmp_path, format="csv")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_study_refuses_an_output_folder_holding_its_base_scene(tmp_path, monkeypatch):
+    (tmp_path / "o").mkdir()
+    scene = write_scene(tmp_path / "o", BOX, "results.csv")
+    before = state(scene)
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(frontpack.OutputPathError,
+                       match=r"results table 'o/results.csv' is the scene file 'o/results.csv'.*never writes over what it reads"):
+        frontpack.study({"scene": "o/results.csv", "output": "o"}, plots=False)
+    assert state(scene) == before
+    assert sorted(f.name for f in (tmp_path / "o").iterdir()) == ["results.csv"]
+    # A run's record is removed before its run: a scene there is refused too.
+    (tmp_path / "o/runs/seed=1").mkdir(parents=True)
+    record = write_scene(tmp_path / "o/runs/seed=1", BOX, "record.json")
+    kept = state(record)
+    with pytest.raises(frontpack.OutputPathError, match=r"run record 'o/runs/seed=1/record.json' is the scene file"):
+        frontpack.study({"scene": "o/runs/seed=1/record.json", "output": "o"}, plots=False)
+    assert state(record) == kept and state(scene) == before
+    # The command line refuses the same study (bad input: exit 2) and leaves the files alone.
+    (tmp_path / "st.yaml").write_text("scene: o/results.csv\noutput: o\n")
+    r = cli("study", "st.yaml", "--no-plots", cwd=tmp_path)
+    assert r.returncode == 2 and "results table 'o/results.csv' is the scene file 'o/results.csv'" in r.stderr, r.stderr
+    assert state(scene) == before and state(record) == kept
