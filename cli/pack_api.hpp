@@ -26,6 +26,13 @@ struct PackOutcome {
   std::string summary;         ///< the summary's analysis and packer lines, as the command prints them
 };
 
+/// `in`'s particles in `scene` instead of their own, as `frontpack validate --scene` reads them
+/// from their file: re-expressed in the frame of the scene's container (absolute = origin +
+/// local, less the new origin, exactly, rounded once). std::invalid_argument when they cannot
+/// be in it: another dimension, spheres and a scene of shapes or the reverse, a template the
+/// scene does not have.
+PackingInput packing_in_scene(const PackingInput& in, Scene scene);
+
 /// The overrides of `frontpack pack --seed/-j`, applied to `scene`, which is then checked as the
 /// command checks it before any work (a scene of shapes resolved; what the run asks of the
 /// machine). Throws SceneError or std::invalid_argument.

@@ -150,15 +150,15 @@ std::shared_ptr<PyPacking> pack(const py::object& source, std::optional<std::uin
 }
 
 /// f(the packing in its scene): the one it was packed in, or `scene` (a path or dict) given
-/// instead (then on a copy of the particles, which carry their scene), without the GIL.
+/// instead (then on a copy of the particles in that scene's frame: packing_in_scene refuses
+/// one they cannot be in), without the GIL.
 template <class F>
 auto in_scene(const PyPacking& p, const py::object& scene, F&& f) {
   if (scene.is_none()) {
     const py::gil_scoped_release released;
     return f(p.in());
   }
-  PackingInput in = p.in();
-  in.scene = scene_from(scene);
+  const PackingInput in = packing_in_scene(p.in(), scene_from(scene));
   const py::gil_scoped_release released;
   return f(in);
 }

@@ -4,10 +4,13 @@ a clear exception that loses nothing, never a crash.
 * No output is an input: Packing.write and frontpack.study refuse (OutputPathError, a
   ValueError) to write over the scene, a mesh, the study file, and leave them as they were (bytes
   and inode).
+* A packing is validated and analysed against any scene it can be in, anywhere in space; a scene
+  it cannot be in (another dimension, shapes for spheres) is a ValueError, not a crash.
 """
 import json
 import os
 import subprocess
+import sys
 
 import pytest
 
@@ -19,6 +22,12 @@ BOX = {
     "dimension": 3,
     "seed": 1,
     "container": {"type": "box", "min": [0, 0, 0], "max": [0.15, 0.15, 0.15]},
+    "particles": {"radius": {"distribution": "uniform", "min": 0.01, "max": 0.02}},
+}
+SQUARE = {
+    "dimension": 2,
+    "seed": 1,
+    "container": {"type": "rectangle", "min": [0, 0], "max": [0.5, 0.5]},
     "particles": {"radius": {"distribution": "uniform", "min": 0.01, "max": 0.02}},
 }
 ELLIPSES = {
@@ -43,6 +52,12 @@ def state(path):
 
 def cli(*args, cwd):
     return subprocess.run([BINARY, *map(str, args)], cwd=cwd, capture_output=True, text=True)
+
+
+def isolated(code, cwd):
+    """Runs `code` (after import frontpack) in a child interpreter: a crash is an exit code there."""
+    return subprocess.run([sys.executable, "-c", "import frontpack, json, sys\n" + code], cwd=cwd, capture_output=True,
+                          text=True, timeout=120)
 
 
 # --- no output is an input --------------------------------------------------------------------
@@ -122,3 +137,64 @@ def test_study_refuses_an_output_folder_holding_its_base_scene(tmp_path, monkeyp
     r = cli("study", "st.yaml", "--no-plots", cwd=tmp_path)
     assert r.returncode == 2 and "results table 'o/results.csv' is the scene file 'o/results.csv'" in r.stderr, r.stderr
     assert state(scene) == before and state(record) == kept
+
+
+# --- a packing in another scene ---------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def packings():
+    return {3: frontpack.pack(dict(BOX, stop={"particles": 30})), 2: frontpack.pack(dict(SQUARE, stop={"particles": 30}))}
+
+
+@pytest.mark.parametrize("call", ["validate", "analyze"])
+def test_a_scene_of_the_other_dimension_is_a_value_error_not_a_crash(tmp_path, call):
+    for d, other, scene in [(3, 2, SQUARE), (2, 3, BOX)]:
+        first = BOX if d == 3 else SQUARE
+        code = (f"p = frontpack.pack({first!r} | {{'stop': {{'particles': 30}}}})\n"
+                f"for s in ({scene!r}, 's.yaml'):\n"
+                f"    try:\n"
+                f"        frontpack.{call}(p, scene=s)\n"
+                f"    except ValueError as e:\n"
+                f"        print(type(e).__name__, e)\n")
+        write_scene(tmp_path, scene)
+        r = isolated(code, tmp_path)
+        assert r.returncode == 0, f"{d}D packing, {other}D scene: exit {r.returncode}\n{r.stderr}"
+        lines = r.stdout.splitlines()
+        assert lines == [f"ValueError the packing is {d}D, the scene <dict> {other}D",
+                         f"ValueError the packing is {d}D, the scene s.yaml {other}D"], r.stdout
+
+
+def test_spheres_against_a_scene_of_shapes_and_the_reverse_are_refused(packings):
+    shapes = frontpack.pack(dict(ELLIPSES, stop={"particles": 5}))
+    with pytest.raises(ValueError, match="the packing is of spheres, the scene <dict> of shapes"):
+        frontpack.validate(packings[2], scene=ELLIPSES)
+    with pytest.raises(ValueError, match="the packing is of shapes, the scene <dict> of spheres"):
+        frontpack.analyze(shapes, scene=SQUARE)
+    assert frontpack.validate(shapes, scene=ELLIPSES)["ok"]
+
+
+def test_a_packing_is_validated_against_a_container_anywhere(tmp_path):
+    # Packed far from the origin; checked against a larger box around it, whose frame origin is
+    # another (1e9 + 1 and 1e9): the verdict, as `frontpack validate` and `analyze` give it.
+    far = dict(BOX, container={"type": "box", "min": [1e9 + 1, -5e8 + 1, 3], "max": [1e9 + 1.15, -5e8 + 1.15, 3.15]})
+    larger = dict(BOX, container={"type": "box", "min": [1e9, -5e8, 2], "max": [1e9 + 2, -5e8 + 2, 4]})
+    path = write_scene(tmp_path, far)
+    larger_path = write_scene(tmp_path, larger, "larger.yaml")
+    assert cli("pack", path, "-o", "p.csv", "-q", cwd=tmp_path).returncode == 0
+    p = frontpack.pack(path)
+    v = frontpack.validate(p, scene=larger_path)
+    assert v["ok"] and v["particles"] == len(p) and v["outside_count"] == 0 and v["overlap_count"] == 0, v["summary"]
+    r = cli("analyze", "p.csv", "--scene", larger_path, "--json", "an.json", "-q", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    expected = json.loads((tmp_path / "an.json").read_text())
+    assert {k: v[k] for k in expected["validation"]} == expected["validation"]
+    assert frontpack.analyze(p, scene=larger_path) == expected
+    assert cli("validate", "p.csv", "--scene", larger_path, "-q", cwd=tmp_path).returncode == 0
+    # Against a box away from it: every particle outside.
+    away = dict(BOX, container={"type": "box", "min": [10, 10, 10], "max": [10.15, 10.15, 10.15]})
+    w = frontpack.validate(p, scene=away)
+    assert not w["ok"] and w["outside_count"] == len(p)
+    near = frontpack.pack(dict(BOX, stop={"particles": 30}))
+    assert frontpack.validate(near, scene=far)["outside_count"] == len(near)
+    # Its own scene given again is its own frame: the verdict of pack.
+    assert frontpack.validate(p, scene=path)["ok"] and frontpack.validate(p, scene=path)["contacts"] == frontpack.validate(p)["contacts"]
