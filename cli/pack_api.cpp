@@ -14,6 +14,7 @@
 #include "contact/shape_validation.hpp"
 #include "core/io/exact_decimal.hpp"
 #include "core/io/scene_limits.hpp"
+#include "core/io/scene_yaml.hpp"
 #include "core/system/parallel_parts.hpp"
 
 namespace fp {
@@ -120,6 +121,12 @@ void move_to(ShapePacking<D>& P, const Vec<D>& origin, const std::size_t templat
 
 }  // namespace
 
+void check_threads(long long requested, const std::string& name) {
+  if (requested < 0 || requested > static_cast<long long>(kMaxThreads))
+    throw std::invalid_argument(name + " must be an integer from 0 (every hardware thread) to " + std::to_string(kMaxThreads) +
+                                " (got " + std::to_string(requested) + ")");
+}
+
 PackingInput packing_in_scene(const PackingInput& in, Scene scene) {
   const std::string named = scene.source_path.empty() ? "the scene" : "the scene " + scene.source_path;
   if (in.dimension != scene.dimension)
@@ -144,7 +151,10 @@ PackingInput packing_in_scene(const PackingInput& in, Scene scene) {
 
 void prepare_scene(Scene& scene, std::optional<std::uint64_t> seed, std::optional<int> threads) {
   if (seed) scene.seed = *seed;
-  if (threads) scene.packer.threads = *threads;
+  if (threads) {
+    check_threads(*threads, "threads");
+    scene.packer.threads = *threads;
+  }
   if (!scene.particle_templates.empty()) check_shape_scene(scene);
   else check_run_limits(scene, estimate_run_demand(scene, mean_ball_measure(*scene.radii, scene.dimension)), available_memory());
 }

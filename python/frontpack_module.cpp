@@ -14,6 +14,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
@@ -94,11 +95,37 @@ py::array centers_of(const Packing<D>& P, py::handle owner) {
 
 py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
+/// numpy's scalars and arrays as plain Python (json.dumps' `default`, for what it cannot write):
+/// a scene dict built with numpy is the same scene.
+py::object plain(const py::object& o) {
+  const py::module_ sys = py::module_::import("sys");
+  if (sys.attr("modules").contains("numpy")) {
+    const py::module_ np = py::module_::import("numpy");
+    if (py::isinstance(o, np.attr("generic")) || py::isinstance(o, np.attr("ndarray"))) return o.attr("tolist")();
+  }
+  throw py::type_error("a scene value is a number, text, flag, list or dict (or numpy's), not " +
+                       py::str(py::type::of(o).attr("__name__")).cast<std::string>() + ": " + py::repr(o).cast<std::string>());
+}
+
 /// JSON text (a subset of YAML): one key per line for documents (messages name their lines),
 /// on one line for a --set value.
 std::string json_dumps(const py::object& o, bool lines = true) {
   const py::object dumps = py::module_::import("json").attr("dumps");
-  return (lines ? dumps(o, py::arg("indent") = 1) : dumps(o)).cast<std::string>();
+  const py::cpp_function to_plain(&plain);
+  try {
+    return (lines ? dumps(o, py::arg("indent") = 1, py::arg("default") = to_plain) : dumps(o, py::arg("default") = to_plain))
+        .cast<std::string>();
+  } catch (py::error_already_set& e) {
+    if (!e.matches(PyExc_RecursionError)) throw;
+    throw py::value_error("the scene is nested too deeply (or holds itself) to be read");
+  }
+}
+
+/// `progress=`: None or something to call.
+void check_callable(const py::object& f, const char* name, const char* signature) {
+  if (!f.is_none() && !PyCallable_Check(f.ptr()))
+    throw py::type_error(std::string(name) + " must be callable, " + name + signature + ", or None (got " +
+                         py::str(py::type::of(f).attr("__name__")).cast<std::string>() + ")");
 }
 
 /// A path given as str or os.PathLike.
@@ -128,10 +155,12 @@ Scene scene_from(const py::object& source, const std::vector<SceneOverride>& cha
   return load_scene(path_of(source), changes);
 }
 
-std::shared_ptr<PyPacking> pack(const py::object& source, std::optional<std::uint64_t> seed, std::optional<int> threads,
+std::shared_ptr<PyPacking> pack(const py::object& source, std::optional<std::uint64_t> seed, std::optional<long long> threads,
                                 py::object progress, const py::object& changes) {
+  check_callable(progress, "progress", "(n, seconds, volume_fraction)");
+  if (threads) check_threads(*threads, "threads");
   Scene scene = scene_from(source, overrides_from(changes));
-  prepare_scene(scene, seed, threads);
+  prepare_scene(scene, seed, threads ? std::optional<int>(static_cast<int>(*threads)) : std::nullopt);
   ProgressFn fn;
   if (!progress.is_none())
     fn = [&progress](std::uint64_t n, double seconds, double vf) {
@@ -151,9 +180,12 @@ std::shared_ptr<PyPacking> pack(const py::object& source, std::optional<std::uin
 
 /// f(the packing in its scene): the one it was packed in, or `scene` (a path or dict) given
 /// instead (then on a copy of the particles in that scene's frame: packing_in_scene refuses
-/// one they cannot be in), without the GIL.
+/// one they cannot be in), without the GIL. `tolerance` < 0: the scene's.
 template <class F>
-auto in_scene(const PyPacking& p, const py::object& scene, F&& f) {
+auto in_scene(const PyPacking& p, const py::object& scene, double tolerance, long long threads, F&& f) {
+  if (std::isnan(tolerance) || std::isinf(tolerance))
+    throw py::value_error("tolerance must be a finite number (< 0: the scene's), got " + std::to_string(tolerance));
+  check_threads(threads, "threads");
   if (scene.is_none()) {
     const py::gil_scoped_release released;
     return f(p.in());
@@ -201,7 +233,11 @@ py::dict row_dict(const StudyRow& row) {
   return d;
 }
 
-py::dict study(const py::object& source, int jobs, bool plots, const py::object& progress, const py::object& executable) {
+py::dict study(const py::object& source, long long jobs, bool plots, const py::object& progress, const py::object& executable) {
+  check_callable(progress, "progress", "(done, total, row)");
+  if (jobs < 0 || jobs > kMaxStudyJobs)
+    throw py::value_error("jobs must be an integer from 0 (the study's) to " + std::to_string(kMaxStudyJobs) + " (got " +
+                          std::to_string(jobs) + ")");
   StudySpec spec;
   if (py::isinstance<py::dict>(source)) {
     spec = parse_study(json_dumps(source), "<dict>");
@@ -212,7 +248,7 @@ py::dict study(const py::object& source, int jobs, bool plots, const py::object&
   o.executable = executable.is_none() ? std::string(FRONTPACK_EXECUTABLE) : path_of(executable);
   if (access(o.executable.c_str(), X_OK) != 0)
     throw std::runtime_error("the frontpack command " + o.executable + " is not there (build it, or give executable=)");
-  o.jobs = jobs;
+  o.jobs = static_cast<int>(jobs);
   o.plots = plots;
   o.quiet = true;
   o.poll = [] {
@@ -360,18 +396,19 @@ PYBIND11_MODULE(frontpack, m) {
         "(default: the one built with this module).");
   m.def(
       "analyze",
-      [](const PyPacking& p, const py::object& scene, double tolerance, int threads) {
-        return json_loads(in_scene(p, scene, [&](const PackingInput& in) {
-          return analysis_json(analyze_input(in, tolerance, threads));
+      [](const PyPacking& p, const py::object& scene, double tolerance, long long threads) {
+        return json_loads(in_scene(p, scene, tolerance, threads, [&](const PackingInput& in) {
+          return analysis_json(analyze_input(in, tolerance, static_cast<int>(threads)));
         }));
       },
       py::arg("packing"), py::kw_only(), py::arg("scene") = py::none(), py::arg("tolerance") = -1.0, py::arg("threads") = 0,
       "The analysis of `frontpack analyze PACKING --scene S --json`, as a dict: in the packing's scene, or `scene`.");
   m.def(
       "validate",
-      [](const PyPacking& p, const py::object& scene, double tolerance, int threads) {
-        const ValidationReport r =
-            in_scene(p, scene, [&](const PackingInput& in) { return validate_input(in, tolerance, -1.0, threads); });
+      [](const PyPacking& p, const py::object& scene, double tolerance, long long threads) {
+        const ValidationReport r = in_scene(p, scene, tolerance, threads, [&](const PackingInput& in) {
+          return validate_input(in, tolerance, -1.0, static_cast<int>(threads));
+        });
         py::dict d = json_loads(validation_json_text(r));
         d["line"] = r.one_line();
         d["summary"] = r.summary();

@@ -6,12 +6,14 @@ a clear exception that loses nothing, never a crash.
   and inode).
 * A packing is validated and analysed against any scene it can be in, anywhere in space; a scene
   it cannot be in (another dimension, shapes for spheres) is a ValueError, not a crash.
+* Scene dicts may hold numpy values; threads=, jobs= and progress= are checked.
 """
 import json
 import os
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 import frontpack
@@ -198,3 +200,51 @@ def test_a_packing_is_validated_against_a_container_anywhere(tmp_path):
     assert frontpack.validate(near, scene=far)["outside_count"] == len(near)
     # Its own scene given again is its own frame: the verdict of pack.
     assert frontpack.validate(p, scene=path)["ok"] and frontpack.validate(p, scene=path)["contacts"] == frontpack.validate(p)["contacts"]
+
+
+# --- arguments --------------------------------------------------------------------------------
+
+def test_numpy_values_in_a_scene_dict_are_the_plain_values():
+    plain = dict(BOX, seed=3)
+    p = frontpack.pack(plain)
+    numpy_scene = {
+        "dimension": np.int64(3),
+        "seed": np.uint64(3),
+        "container": {"type": np.str_("box"), "min": np.array([0, 0, 0], dtype=np.int8), "max": np.array([0.15, 0.15, 0.15])},
+        "particles": {"radius": {"distribution": "uniform", "min": np.float64(0.01), "max": np.array(0.02)}},
+    }
+    q = frontpack.pack(numpy_scene)
+    assert np.array_equal(p.centers, q.centers) and np.array_equal(p.radii, q.radii)
+    r = frontpack.pack(dict(BOX, seed=3), set={"container.max": np.array([0.15, 0.15, 0.15]), "seed": np.int32(3)})
+    assert np.array_equal(p.centers, r.centers)
+    with pytest.raises(TypeError, match="a scene value is a number, text, flag, list or dict .*not set"):
+        frontpack.pack(dict(BOX, seed={1, 2}))
+    with pytest.raises(ValueError, match="nested too deeply"):
+        deep = BOX
+        for _ in range(5000):
+            deep = {"particles": deep}
+        frontpack.pack(deep)
+
+
+def test_threads_jobs_and_progress_are_checked(packings, tmp_path):
+    small = dict(BOX, stop={"particles": 5})
+    for bad in (-1, 4097, 10**9, 10**12):
+        with pytest.raises(ValueError, match=rf"threads must be an integer from 0 \(every hardware thread\) to 4096 \(got {bad}\)"):
+            frontpack.pack(small, threads=bad)
+        with pytest.raises(ValueError, match="threads must be an integer from 0"):
+            frontpack.validate(packings[3], threads=bad)
+        with pytest.raises(ValueError, match="threads must be an integer from 0"):
+            frontpack.analyze(packings[3], threads=bad)
+    assert len(frontpack.pack(small, threads=0)) == len(frontpack.pack(small, threads=4096)) == 5
+    with pytest.raises(TypeError, match=r"progress must be callable, progress\(n, seconds, volume_fraction\), or None \(got int\)"):
+        frontpack.pack(small, progress=5)
+    with pytest.raises(ValueError, match="tolerance must be a finite number"):
+        frontpack.validate(packings[3], tolerance=float("nan"))
+    write_scene(tmp_path, BOX, "base.yaml")
+    study = {"scene": str(tmp_path / "base.yaml"), "output": str(tmp_path / "o")}
+    with pytest.raises(TypeError, match=r"progress must be callable, progress\(done, total, row\)"):
+        frontpack.study(study, plots=False, progress="yes")
+    for bad in (-1, 1025):
+        with pytest.raises(ValueError, match=rf"jobs must be an integer from 0 \(the study's\) to 1024 \(got {bad}\)"):
+            frontpack.study(study, plots=False, jobs=bad)
+    assert sorted(f.name for f in tmp_path.iterdir()) == ["base.yaml"]
