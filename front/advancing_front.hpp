@@ -275,8 +275,8 @@ class AdvancingFront {
     std::size_t k = pool_.size();
     for (std::size_t q = 0; q < pool_.size(); ++q)
       if (model_.fits(pool_[q], deep) && (k == pool_.size() || radius(pool_[q]) > radius(pool_[k]))) k = q;
-    if (k == pool_.size())
-      throw std::runtime_error("the container cannot hold a first particle of (circumscribed) radius " +
+    if (k == pool_.size())  // the scene's fault (for shapes the scene check cannot tell): bad input
+      throw std::invalid_argument("the container cannot hold a first particle of (circumscribed) radius " +
                                std::to_string(radius(pool_[0])) +
                                " at its interior point: container too small for the size distribution");
     start_cluster(res, seed_point_, k);
