@@ -192,7 +192,7 @@ int run(int argc, char** argv) {
       "study", "pack every run of a study (a base scene, parameters swept, seeds) in parallel processes: one CSV, the figures");
   study_cmd->add_option("study", study_path, "study file (YAML; README: Comparative studies)")->required();
   study_cmd->add_option("-J,--jobs", study.jobs, "runs at once (replaces the study's jobs; default: hardware threads / threads)")
-      ->check(CLI::Range(1, 1024));
+      ->check(CLI::Range(1, fp::kMaxStudyJobs));
   study_cmd->add_flag("--no-plots", no_plots, "the CSV only");
   study_cmd->add_flag("--list", study.list_only, "check every run's scene, list the runs (kept or to run) and run nothing");
   study_cmd->add_option("--python", study.python, "interpreter with matplotlib (default /usr/bin/python3)");

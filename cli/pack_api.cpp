@@ -1,6 +1,10 @@
 #include "cli/pack_api.hpp"
 
+#include <array>
 #include <chrono>
+#include <optional>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "cli/run_record_start.hpp"
@@ -8,7 +12,9 @@
 #include "cli/sphere_pack.hpp"
 #include "contact/shape_analysis.hpp"
 #include "contact/shape_validation.hpp"
+#include "core/io/exact_decimal.hpp"
 #include "core/io/scene_limits.hpp"
+#include "core/io/scene_yaml.hpp"
 #include "core/system/parallel_parts.hpp"
 
 namespace fp {
@@ -73,11 +79,82 @@ ValidationReport validate_as(const Scene& scene, const ShapePacking<D>& P, doubl
   return validate_shapes<D>(P, *scene.container<D>(), tol, requested_templates(scene), alpha >= 0 ? alpha : kRadiiAlpha);
 }
 
+/// The particles' coordinates moved from the frame of `from` to that of `to` through their
+/// absolute text, as a file written in one frame and read in the other gives them.
+template <int D>
+struct Reframe {
+  std::array<OffsetAxis, 3> from, to;
+  Reframe(const Vec<D>& a, const Vec<D>& b) : from(offset_axes(a.data(), D)), to(offset_axes(b.data(), D)) {}
+  Vec<D> operator()(const Vec<D>& local) const {
+    Vec<D> out;
+    std::string text;
+    for (int k = 0; k < D; ++k) {
+      text.clear();
+      from[k].append_absolute(text, local[k]);
+      const std::optional<double> moved = to[k].local_from_text(text);
+      out[k] = moved ? *moved : local[k];  // not a number stays so (the validation reports it)
+    }
+    return out;
+  }
+};
+
+template <int D>
+void move_to(Packing<D>& P, const Vec<D>& origin) {
+  if (P.origin == origin) return;
+  const Reframe<D> reframe(P.origin, origin);
+  for (Vec<D>& c : P.centers) c = reframe(c);
+  P.origin = origin;
+}
+
+template <int D>
+void move_to(ShapePacking<D>& P, const Vec<D>& origin, const std::size_t templates) {
+  for (std::size_t i = 0; i < P.particles.size(); ++i)
+    if (static_cast<std::size_t>(P.particles[i].template_id) >= templates)
+      throw std::invalid_argument("particle " + std::to_string(i) + " is of template " +
+                                  std::to_string(P.particles[i].template_id) + " but the scene has " +
+                                  std::to_string(templates) + " particle templates");
+  if (P.origin == origin) return;
+  const Reframe<D> reframe(P.origin, origin);
+  for (Particle<D>& p : P.particles) p.pose.position = reframe(p.pose.position);
+  P.origin = origin;
+}
+
 }  // namespace
+
+void check_threads(long long requested, const std::string& name) {
+  if (requested < 0 || requested > static_cast<long long>(kMaxThreads))
+    throw std::invalid_argument(name + " must be an integer from 0 (every hardware thread) to " + std::to_string(kMaxThreads) +
+                                " (got " + std::to_string(requested) + ")");
+}
+
+PackingInput packing_in_scene(const PackingInput& in, Scene scene) {
+  const std::string named = scene.source_path.empty() ? "the scene" : "the scene " + scene.source_path;
+  if (in.dimension != scene.dimension)
+    throw std::invalid_argument("the packing is " + std::to_string(in.dimension) + "D, " + named + " " +
+                                std::to_string(scene.dimension) + "D");
+  const bool shapes = !scene.particle_templates.empty();
+  if (in.shapes != shapes)
+    throw std::invalid_argument(std::string("the packing is of ") + (in.shapes ? "shapes" : "spheres") + ", " + named +
+                                (shapes ? " of shapes" : " of spheres"));
+  PackingInput out = in;
+  out.scene = std::move(scene);
+  const Scene& s = *out.scene;
+  if (out.dimension == 2) {
+    const Vec<2>& origin = s.container<2>()->origin();
+    out.shapes ? move_to<2>(out.shapes2, origin, s.particle_templates.size()) : move_to<2>(out.packing2, origin);
+  } else {
+    const Vec<3>& origin = s.container<3>()->origin();
+    out.shapes ? move_to<3>(out.shapes3, origin, s.particle_templates.size()) : move_to<3>(out.packing3, origin);
+  }
+  return out;
+}
 
 void prepare_scene(Scene& scene, std::optional<std::uint64_t> seed, std::optional<int> threads) {
   if (seed) scene.seed = *seed;
-  if (threads) scene.packer.threads = *threads;
+  if (threads) {
+    check_threads(*threads, "threads");
+    scene.packer.threads = *threads;
+  }
   if (!scene.particle_templates.empty()) check_shape_scene(scene);
   else check_run_limits(scene, estimate_run_demand(scene, mean_ball_measure(*scene.radii, scene.dimension)), available_memory());
 }

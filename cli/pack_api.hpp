@@ -26,9 +26,20 @@ struct PackOutcome {
   std::string summary;         ///< the summary's analysis and packer lines, as the command prints them
 };
 
+/// `requested` threads (-j, packer.threads, a Python threads=): 0 (every hardware thread) to
+/// kMaxThreads, as the command line takes them; std::invalid_argument naming `name` otherwise.
+void check_threads(long long requested, const std::string& name);
+
+/// `in`'s particles in `scene` instead of their own, as `frontpack validate --scene` reads them
+/// from their file: re-expressed in the frame of the scene's container (absolute = origin +
+/// local, less the new origin, exactly, rounded once). std::invalid_argument when they cannot
+/// be in it: another dimension, spheres and a scene of shapes or the reverse, a template the
+/// scene does not have.
+PackingInput packing_in_scene(const PackingInput& in, Scene scene);
+
 /// The overrides of `frontpack pack --seed/-j`, applied to `scene`, which is then checked as the
 /// command checks it before any work (a scene of shapes resolved; what the run asks of the
-/// machine). Throws SceneError or std::invalid_argument.
+/// machine; `threads` by check_threads). Throws SceneError or std::invalid_argument.
 void prepare_scene(Scene& scene, std::optional<std::uint64_t> seed, std::optional<int> threads);
 
 /// `frontpack pack` of a prepared scene, its outputs not written: packed (progress as the

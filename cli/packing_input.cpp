@@ -56,9 +56,12 @@ PackingInput read_packing_input(const std::string& packing_path, const std::stri
 
 std::vector<NamedPath> scene_reads(const Scene& scene, const std::string& named_by) {
   std::vector<NamedPath> reads;
-  for (std::size_t k = 0; k < scene.read_files.size(); ++k)
-    reads.push_back({scene.read_files[k], k == 0 ? named_by : scene.source_path + ": key 'container.file'",
-                     k == 0 ? "scene file" : "mesh file"});
+  for (std::size_t k = 0; k < scene.read_files.size(); ++k) {
+    // The scene file comes first when there is one (a scene given as text, a Python dict, has none).
+    const bool scene_file = k == 0 && scene.read_files[0] == scene.source_path;
+    reads.push_back({scene.read_files[k], scene_file ? named_by : scene.source_path + ": key 'container.file'",
+                     scene_file ? "scene file" : "mesh file"});
+  }
   return reads;
 }
 

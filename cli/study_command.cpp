@@ -16,7 +16,9 @@
 #include "cli/child_process.hpp"
 #include "cli/failure_report.hpp"
 #include "cli/pack_api.hpp"
+#include "cli/packing_input.hpp"
 #include "core/io/atomic_file.hpp"
+#include "core/io/output_paths.hpp"
 #include "core/io/scene_yaml.hpp"
 
 #ifndef FRONTPACK_STUDY_PLOT_SCRIPT
@@ -46,8 +48,8 @@ std::string last_line(const std::string& path) {
 
 /// Reads every run's scene with its changes and checks it as `pack` would (once per combination
 /// of the parameters: the seeds share it); marks the runs of shapes. Returns the text of each
-/// base scene (a kept run's record must have it).
-std::map<std::string, std::string> check_runs(const StudySpec& spec, std::vector<StudyRun>& runs) {
+/// base scene (a kept run's record must have it); adds every file read (scenes, meshes) to `reads`.
+std::map<std::string, std::string> check_runs(const StudySpec& spec, std::vector<StudyRun>& runs, std::vector<NamedPath>& reads) {
   std::map<std::string, std::string> base_texts;
   std::map<std::vector<std::size_t>, bool> checked;  // levels -> shapes
   for (StudyRun& run : runs) {
@@ -60,6 +62,7 @@ std::map<std::string, std::string> check_runs(const StudySpec& spec, std::vector
       prepare_scene(scene, run.seed, spec.threads);
       run.shapes = !scene.particle_templates.empty();
       base_texts[run.scene_path] = scene.source_text;
+      for (const NamedPath& r : scene_reads(scene, "study " + spec.path + ", run " + run.name)) reads.push_back(r);
     } catch (const SceneError& e) {
       throw SceneError(e.file(), e.line(), e.column(), e.key(), e.message() + " (study " + spec.path + ", run " + run.name + ")");
     } catch (const std::exception& e) {
@@ -68,6 +71,39 @@ std::map<std::string, std::string> check_runs(const StudySpec& spec, std::vector
     checked[run.levels] = run.shapes;
   }
   return base_texts;
+}
+
+/// Refuses, before anything is written, a study that would write over a file it reads (the study
+/// file, a scene, a mesh: e.g. a base scene kept as OUTPUT/results.csv) or write one file twice.
+void check_study_writes(const StudySpec& spec, const std::vector<StudyRun>& runs, std::vector<NamedPath> reads, bool plots) {
+  if (spec.path != "<dict>") reads.insert(reads.begin(), {spec.path, "the study", "study file"});
+  const fs::path out(spec.output_dir);
+  const std::string where = spec.path + ": the study's output folder '" + spec.output_dir + "'";
+  std::vector<NamedPath> writes{{(out / "results.csv").string(), where, "results table"}};
+  if (plots) {
+    writes.push_back({(out / "plots.json").string(), where, "figure request"});
+    writes.push_back({(out / "plots" / "figures.txt").string(), where, "list of figures"});
+    writes.push_back({(out / "plots" / "plot.log").string(), where, "log of the figures"});
+    // The figures' names are the plot script's: no input may be in their folder.
+    const auto folder_of = [](const fs::path& p) {
+      std::error_code ec;
+      const fs::path c = fs::weakly_canonical(fs::absolute(p, ec), ec);
+      return ec ? fs::path() : c.parent_path();
+    };
+    const fs::path figures = folder_of(out / "plots" / "figures.txt");
+    for (const NamedPath& r : reads)
+      if (!figures.empty() && folder_of(r.path) == figures)
+        throw OutputPathError(where + ": the figures' folder '" + (out / "plots").string() + "' holds the " + r.what + " '" +
+                              r.path + "' (" + r.where + "): frontpack never writes over what it reads");
+  }
+  for (const StudyRun& run : runs) {
+    const StudyRunFiles f = study_run_files(spec, run);
+    const std::string named = spec.path + ": run " + run.name;
+    writes.push_back({f.record, named, "run record"});
+    writes.push_back({f.packing, named, "packing"});
+    writes.push_back({f.log, named, "log"});
+  }
+  check_distinct_files(writes, reads);
 }
 
 /// What the plot script needs besides the CSV: the parameters (their values in order, numeric
@@ -140,7 +176,9 @@ std::string summary_of(const StudyRow& row) {
 
 StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o) {
   std::vector<StudyRun> runs = study_runs(spec);
-  const std::map<std::string, std::string> base_texts = check_runs(spec, runs);
+  std::vector<NamedPath> reads;
+  const std::map<std::string, std::string> base_texts = check_runs(spec, runs, reads);
+  check_study_writes(spec, runs, std::move(reads), o.plots && !o.list_only);
 
   StudyOutcome out;
   out.runs = runs.size();
@@ -236,6 +274,8 @@ int run_study_command(const std::string& study_path, StudyOptions options) {
     const Activity doing("running study '" + study_path + "'");
     out = run_study(spec, options);
   } catch (const SceneError&) {
+    return report_failure(2);
+  } catch (const OutputPathError&) {
     return report_failure(2);
   } catch (...) {
     return report_failure(1);

@@ -37,12 +37,13 @@ struct StudyOutcome {
 };
 
 /// Runs the study. Every run's scene is read and checked first (a problem names the study
-/// file's line or the scene file's, and the run); throws SceneError / std::runtime_error then,
-/// before any run starts.
+/// file's line or the scene file's, and the run), and every file it writes against every file
+/// it reads (core/io/output_paths.hpp: no output is an input or another output); throws
+/// SceneError / OutputPathError / std::runtime_error then, before anything is written.
 StudyOutcome run_study(const StudySpec& spec, const StudyOptions& options);
 
 /// The command: returns its exit code (0; 1 a run failed or the figures could not be drawn;
-/// 2 bad study; 3 a packing failed its validation).
+/// 2 bad study, or one that would write over what it reads; 3 a packing failed its validation).
 int run_study_command(const std::string& study_path, StudyOptions options);
 
 }  // namespace fp

@@ -287,7 +287,7 @@ class AdvancingFront {
     std::size_t k = pool_.size();
     for (std::size_t q = 0; q < pool_.size(); ++q)
       if (model_.fits(pool_[q], deep) && (k == pool_.size() || radius(pool_[q]) > radius(pool_[k]))) k = q;
-    if (k == pool_.size())
+    if (k == pool_.size())  // the scene's fault (for shapes the scene check cannot tell): bad input
       throw ContainerTooSmall("the container cannot hold a first particle of (circumscribed) radius " +
                                std::to_string(radius(pool_[0])) +
                                " at its interior point: container too small for the size distribution");

@@ -14,6 +14,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
@@ -22,9 +23,11 @@
 #include <vector>
 
 #include "cli/pack_api.hpp"
+#include "cli/packing_input.hpp"
 #include "cli/study_command.hpp"
 #include "core/io/analysis_json.hpp"
 #include "core/io/output_format.hpp"
+#include "core/io/output_paths.hpp"
 #include "core/io/packing_writers.hpp"
 #include "core/io/scene_error.hpp"
 #include "core/io/scene_yaml.hpp"
@@ -92,11 +95,37 @@ py::array centers_of(const Packing<D>& P, py::handle owner) {
 
 py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
+/// numpy's scalars and arrays as plain Python (json.dumps' `default`, for what it cannot write):
+/// a scene dict built with numpy is the same scene.
+py::object plain(const py::object& o) {
+  const py::module_ sys = py::module_::import("sys");
+  if (sys.attr("modules").contains("numpy")) {
+    const py::module_ np = py::module_::import("numpy");
+    if (py::isinstance(o, np.attr("generic")) || py::isinstance(o, np.attr("ndarray"))) return o.attr("tolist")();
+  }
+  throw py::type_error("a scene value is a number, text, flag, list or dict (or numpy's), not " +
+                       py::str(py::type::of(o).attr("__name__")).cast<std::string>() + ": " + py::repr(o).cast<std::string>());
+}
+
 /// JSON text (a subset of YAML): one key per line for documents (messages name their lines),
 /// on one line for a --set value.
 std::string json_dumps(const py::object& o, bool lines = true) {
   const py::object dumps = py::module_::import("json").attr("dumps");
-  return (lines ? dumps(o, py::arg("indent") = 1) : dumps(o)).cast<std::string>();
+  const py::cpp_function to_plain(&plain);
+  try {
+    return (lines ? dumps(o, py::arg("indent") = 1, py::arg("default") = to_plain) : dumps(o, py::arg("default") = to_plain))
+        .cast<std::string>();
+  } catch (py::error_already_set& e) {
+    if (!e.matches(PyExc_RecursionError)) throw;
+    throw py::value_error("the scene is nested too deeply (or holds itself) to be read");
+  }
+}
+
+/// `progress=`: None or something to call.
+void check_callable(const py::object& f, const char* name, const char* signature) {
+  if (!f.is_none() && !PyCallable_Check(f.ptr()))
+    throw py::type_error(std::string(name) + " must be callable, " + name + signature + ", or None (got " +
+                         py::str(py::type::of(f).attr("__name__")).cast<std::string>() + ")");
 }
 
 /// A path given as str or os.PathLike.
@@ -126,10 +155,12 @@ Scene scene_from(const py::object& source, const std::vector<SceneOverride>& cha
   return load_scene(path_of(source), changes);
 }
 
-std::shared_ptr<PyPacking> pack(const py::object& source, std::optional<std::uint64_t> seed, std::optional<int> threads,
+std::shared_ptr<PyPacking> pack(const py::object& source, std::optional<std::uint64_t> seed, std::optional<long long> threads,
                                 py::object progress, const py::object& changes) {
+  check_callable(progress, "progress", "(n, seconds, volume_fraction)");
+  if (threads) check_threads(*threads, "threads");
   Scene scene = scene_from(source, overrides_from(changes));
-  prepare_scene(scene, seed, threads);
+  prepare_scene(scene, seed, threads ? std::optional<int>(static_cast<int>(*threads)) : std::nullopt);
   ProgressFn fn;
   if (!progress.is_none())
     fn = [&progress](std::uint64_t n, double seconds, double vf) {
@@ -148,22 +179,34 @@ std::shared_ptr<PyPacking> pack(const py::object& source, std::optional<std::uin
 }
 
 /// f(the packing in its scene): the one it was packed in, or `scene` (a path or dict) given
-/// instead (then on a copy of the particles, which carry their scene), without the GIL.
+/// instead (then on a copy of the particles in that scene's frame: packing_in_scene refuses
+/// one they cannot be in), without the GIL. `tolerance` < 0: the scene's.
 template <class F>
-auto in_scene(const PyPacking& p, const py::object& scene, F&& f) {
+auto in_scene(const PyPacking& p, const py::object& scene, double tolerance, long long threads, F&& f) {
+  if (std::isnan(tolerance) || std::isinf(tolerance))
+    throw py::value_error("tolerance must be a finite number (< 0: the scene's), got " + std::to_string(tolerance));
+  check_threads(threads, "threads");
   if (scene.is_none()) {
     const py::gil_scoped_release released;
     return f(p.in());
   }
-  PackingInput in = p.in();
-  in.scene = scene_from(scene);
+  const PackingInput in = packing_in_scene(p.in(), scene_from(scene));
   const py::gil_scoped_release released;
   return f(in);
 }
 
-void write_file(const PyPacking& p, const std::string& path, const std::string& format) {
+/// Writes the packing to `path`, checked as the command line checks its outputs first: no
+/// output (nor a side file of one) may be a file the packing was made from (its scene, a mesh)
+/// or another output.
+void write_file(const PyPacking& p, const py::object& where, const std::string& format) {
+  const std::string path = path_of(where);
   const OutputFormat f = format.empty() ? format_from_extension(path) : parse_output_format(format);
   const PackingInput& in = p.in();
+  std::vector<NamedPath> writes{{path, "Packing.write", "output"}};
+  if (in.shapes)  // shape packings write a side file for vtu and lammps
+    for (const std::string& side : companion_paths(f, path))
+      writes.push_back({side, "Packing.write", "the side file of output '" + path + "'"});
+  check_output_paths(writes, in.scene ? scene_reads(*in.scene, "the scene of frontpack.pack") : std::vector<NamedPath>{});
   const py::gil_scoped_release released;
   if (in.shapes) {
     in.dimension == 2 ? write_packing<2>(f, path, in.shapes2, p.run.record) : write_packing<3>(f, path, in.shapes3, p.run.record);
@@ -190,7 +233,11 @@ py::dict row_dict(const StudyRow& row) {
   return d;
 }
 
-py::dict study(const py::object& source, int jobs, bool plots, const py::object& progress, const py::object& executable) {
+py::dict study(const py::object& source, long long jobs, bool plots, const py::object& progress, const py::object& executable) {
+  check_callable(progress, "progress", "(done, total, row)");
+  if (jobs < 0 || jobs > kMaxStudyJobs)
+    throw py::value_error("jobs must be an integer from 0 (the study's) to " + std::to_string(kMaxStudyJobs) + " (got " +
+                          std::to_string(jobs) + ")");
   StudySpec spec;
   if (py::isinstance<py::dict>(source)) {
     spec = parse_study(json_dumps(source), "<dict>");
@@ -201,7 +248,7 @@ py::dict study(const py::object& source, int jobs, bool plots, const py::object&
   o.executable = executable.is_none() ? std::string(FRONTPACK_EXECUTABLE) : path_of(executable);
   if (access(o.executable.c_str(), X_OK) != 0)
     throw std::runtime_error("the frontpack command " + o.executable + " is not there (build it, or give executable=)");
-  o.jobs = jobs;
+  o.jobs = static_cast<int>(jobs);
   o.plots = plots;
   o.quiet = true;
   o.poll = [] {
@@ -242,6 +289,8 @@ PYBIND11_MODULE(frontpack, m) {
   m.doc() = "frontpack: dense packings of spheres, disks and shapes by the advancing front (and the methods beside it)";
   m.attr("__version__") = kVersion;
   py::register_exception<SceneError>(m, "SceneError", PyExc_ValueError);
+  // A file that must not be written (it is read, or written twice; no folder): nothing was.
+  py::register_exception<OutputPathError>(m, "OutputPathError", PyExc_ValueError);
 
   py::class_<PyPacking, std::shared_ptr<PyPacking>>(m, "Packing", "A packing made by frontpack.pack, with its run record")
       .def_property_readonly("dimension", [](const PyPacking& p) { return p.in().dimension; })
@@ -301,7 +350,8 @@ PYBIND11_MODULE(frontpack, m) {
                              "the analysis and packer lines of the command line's summary")
       .def_property_readonly("scene_path", [](const PyPacking& p) { return p.in().scene->source_path; })
       .def("write", &write_file, py::arg("path"), py::arg("format") = "",
-           "writes the packing (vtu, yade, lammps, csv, json; default: from the extension), all or nothing")
+           "writes the packing (vtu, yade, lammps, csv, json; default: from the extension), all or nothing; refuses "
+           "(OutputPathError, a ValueError) a path that is its scene or a file the scene reads")
       .def("__repr__", [](const PyPacking& p) {
         return "<frontpack.Packing: " + std::to_string(p.size()) + (p.in().shapes ? " shapes" : " spheres") + ", " +
                std::to_string(p.in().dimension) + "D, scene " + p.in().scene->source_path + ">";
@@ -346,18 +396,19 @@ PYBIND11_MODULE(frontpack, m) {
         "(default: the one built with this module).");
   m.def(
       "analyze",
-      [](const PyPacking& p, const py::object& scene, double tolerance, int threads) {
-        return json_loads(in_scene(p, scene, [&](const PackingInput& in) {
-          return analysis_json(analyze_input(in, tolerance, threads));
+      [](const PyPacking& p, const py::object& scene, double tolerance, long long threads) {
+        return json_loads(in_scene(p, scene, tolerance, threads, [&](const PackingInput& in) {
+          return analysis_json(analyze_input(in, tolerance, static_cast<int>(threads)));
         }));
       },
       py::arg("packing"), py::kw_only(), py::arg("scene") = py::none(), py::arg("tolerance") = -1.0, py::arg("threads") = 0,
       "The analysis of `frontpack analyze PACKING --scene S --json`, as a dict: in the packing's scene, or `scene`.");
   m.def(
       "validate",
-      [](const PyPacking& p, const py::object& scene, double tolerance, int threads) {
-        const ValidationReport r =
-            in_scene(p, scene, [&](const PackingInput& in) { return validate_input(in, tolerance, -1.0, threads); });
+      [](const PyPacking& p, const py::object& scene, double tolerance, long long threads) {
+        const ValidationReport r = in_scene(p, scene, tolerance, threads, [&](const PackingInput& in) {
+          return validate_input(in, tolerance, -1.0, static_cast<int>(threads));
+        });
         py::dict d = json_loads(validation_json_text(r));
         d["line"] = r.one_line();
         d["summary"] = r.summary();

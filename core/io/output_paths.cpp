@@ -7,7 +7,9 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <system_error>
+#include <tuple>
 
 #include "core/io/atomic_file.hpp"
 #include "core/io/temp_file_registry.hpp"
@@ -28,8 +30,8 @@ struct Identity {
   dev_t dev = 0;
   ino_t ino = 0;
   std::string canonical;
-  bool operator==(const Identity& o) const {
-    return exists == o.exists && (exists ? dev == o.dev && ino == o.ino : canonical == o.canonical);
+  bool operator<(const Identity& o) const {
+    return std::tie(exists, dev, ino, canonical) < std::tie(o.exists, o.dev, o.ino, o.canonical);
   }
 };
 
@@ -104,18 +106,24 @@ void check_output_paths(const std::vector<NamedPath>& outputs, const std::vector
     check_name(o);
     check_writable(o);
   }
-  std::vector<Identity> out_ids, in_ids;
-  for (const NamedPath& o : outputs) out_ids.push_back(identity_of(o.path));
-  for (const NamedPath& i : inputs) in_ids.push_back(identity_of(i.path));
+  check_distinct_files(outputs, inputs);
+}
+
+void check_distinct_files(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs) {
+  // By identity, first named first: a study's hundred thousand runs are not compared pairwise.
+  std::map<Identity, std::size_t> read, written;
+  for (std::size_t i = 0; i < inputs.size(); ++i) read.emplace(identity_of(inputs[i].path), i);
   for (std::size_t k = 0; k < outputs.size(); ++k) {
-    for (std::size_t i = 0; i < inputs.size(); ++i)
-      if (out_ids[k] == in_ids[i])
-        refuse(outputs[k], "is the " + inputs[i].what + " '" + inputs[i].path + "' (" + inputs[i].where +
-                               "): frontpack never writes over what it reads");
-    for (std::size_t j = 0; j < k; ++j)
-      if (out_ids[k] == out_ids[j])
-        refuse(outputs[k], "is the same file as " + outputs[j].what + " '" + outputs[j].path + "' (" + outputs[j].where +
-                               "): one would replace the other; give each its own file");
+    const Identity id = identity_of(outputs[k].path);
+    if (const auto it = read.find(id); it != read.end()) {
+      const NamedPath& in = inputs[it->second];
+      refuse(outputs[k], "is the " + in.what + " '" + in.path + "' (" + in.where + "): frontpack never writes over what it reads");
+    }
+    if (const auto [it, fresh] = written.emplace(id, k); !fresh) {
+      const NamedPath& other = outputs[it->second];
+      refuse(outputs[k], "is the same file as " + other.what + " '" + other.path + "' (" + other.where +
+                             "): one would replace the other; give each its own file");
+    }
   }
 }
 

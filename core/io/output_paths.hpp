@@ -32,4 +32,8 @@ class OutputPathError : public std::runtime_error {
 /// Throws OutputPathError for the first problem found (see above).
 void check_output_paths(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs);
 
+/// The last check alone: no output is an input or another output. For files in folders not made
+/// yet (a study's runs), as many as there are: no limit on their number.
+void check_distinct_files(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs);
+
 }  // namespace fp

@@ -146,7 +146,7 @@ StudySpec parse_study(const std::string& text, const std::string& source_name) {
   }
   if (auto v = root.find("jobs")) {
     const std::uint64_t j = v->unsigned_integer();
-    if (j < 1 || j > 1024) v->fail("must be 1 .. 1024 (runs at once)");
+    if (j < 1 || j > static_cast<std::uint64_t>(kMaxStudyJobs)) v->fail("must be 1 .. " + std::to_string(kMaxStudyJobs) + " (runs at once)");
     s.jobs = static_cast<int>(j);
   }
   if (auto v = root.find("output")) s.output_dir = study_relative(ctx, v->string());

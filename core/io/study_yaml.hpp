@@ -62,6 +62,8 @@ struct StudySpec {
 
 /// Most runs a study may have (each is a process and a folder).
 inline constexpr std::size_t kMaxStudyRuns = 100000;
+/// Most runs at once (`jobs`, -J, frontpack.study's jobs=).
+inline constexpr int kMaxStudyJobs = 1024;
 
 /// Reads `path`. Throws SceneError.
 StudySpec load_study(const std::string& path);

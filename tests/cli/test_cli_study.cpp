@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "cli_test_util.hpp"
+#include "refusal_check.hpp"
 
 namespace fptest {
 namespace {
@@ -326,6 +327,42 @@ TEST(CliStudy, ABadStudyIsRefusedBeforeAnyRun) {
     EXPECT_NE(r.err.find(message), std::string::npos) << study << "\n" << r.err;
     EXPECT_FALSE(fs::exists(dir.work() / "s.out/runs")) << study;
   }
+}
+
+// A study never writes over what it reads: its table, figures or a run's files on the base scene
+// (or the study file) are refused before anything is written, the folder as it was.
+TEST(CliStudy, AnOutputThatIsAnInputIsRefusedAndNothingChanges) {
+  const auto with = [](const std::string& scene_at, const std::string& study_at, const std::string& study) {
+    return [=](const fs::path& w) {
+      fs::create_directories((w / scene_at).parent_path());
+      fs::create_directories((w / study_at).parent_path());
+      write_bytes(w / scene_at, kBase);
+      write_bytes(w / study_at, study);
+    };
+  };
+  // The base scene kept as the study's own table (it used to be replaced, and the study exit 0).
+  expect_refused(with("o/results.csv", "s.yaml", "scene: o/results.csv\noutput: o\n"), "study s.yaml", 2,
+                 {"results table 'o/results.csv' is the scene file 'o/results.csv'", "run seed=1",
+                  "frontpack never writes over what it reads"});
+  expect_refused(with("o/results.csv", "s.yaml", "scene: o/results.csv\noutput: o\n"), "study s.yaml --no-plots --list", 2,
+                 {"results table 'o/results.csv' is the scene file"});
+  // A run's record (removed before the run starts), its log and its packing.
+  for (const char* file : {"record.json", "log.txt", "packing.csv"})
+    expect_refused(with(std::string("o/runs/seed=1/") + file, "s.yaml", std::string("scene: o/runs/seed=1/") + file + "\noutput: o\n"),
+                   "study s.yaml --no-plots", 2, {std::string("'o/runs/seed=1/") + file + "' is the scene file"});
+  // The study file itself, and a scene in the figures' folder (the script names the figures).
+  expect_refused(with("base.yaml", "o/results.csv", "scene: ../base.yaml\noutput: .\n"), "study o/results.csv", 2,
+                 {"results table 'o/results.csv' is the study file 'o/results.csv'"});
+  expect_refused(with("o/plots/base.yaml", "s.yaml", "scene: o/plots/base.yaml\noutput: o\n"), "study s.yaml", 2,
+                 {"the figures' folder 'o/plots' holds the scene file 'o/plots/base.yaml'"});
+  // Through another name of the same file: a hard link.
+  expect_refused(
+      [&](const fs::path& w) {
+        with("base.yaml", "s.yaml", "scene: base.yaml\noutput: o\n")(w);
+        fs::create_directories(w / "o");
+        fs::create_hard_link(w / "base.yaml", w / "o/results.csv");
+      },
+      "study s.yaml", 2, {"results table 'o/results.csv' is the scene file 'base.yaml'"});
 }
 
 TEST(CliStudy, AFailedRunIsReportedAndTheOthersKept) {
