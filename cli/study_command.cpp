@@ -79,6 +79,15 @@ void check_study_writes(const StudySpec& spec, const std::vector<StudyRun>& runs
   if (spec.path != "<dict>") reads.insert(reads.begin(), {spec.path, "the study", "study file"});
   const fs::path out(spec.output_dir);
   const std::string where = spec.path + ": the study's output folder '" + spec.output_dir + "'";
+  // The folder, or the first part of its path that exists, must be a folder ("Not a directory",
+  // exit 1, once came after the scene checks).
+  {
+    std::error_code ec;
+    fs::path p = fs::absolute(out, ec);
+    while (!ec && !p.empty() && !fs::exists(p, ec) && p.has_parent_path() && p.parent_path() != p) p = p.parent_path();
+    if (!ec && fs::exists(p, ec) && !fs::is_directory(p, ec))
+      throw OutputPathError(where + ": '" + p.string() + "' is a file, not a folder; give 'output:' a folder");
+  }
   std::vector<NamedPath> writes{{(out / "results.csv").string(), where, "results table"}};
   if (plots) {
     writes.push_back({(out / "plots.json").string(), where, "figure request"});

@@ -363,6 +363,14 @@ TEST(CliStudy, AnOutputThatIsAnInputIsRefusedAndNothingChanges) {
         fs::create_hard_link(w / "base.yaml", w / "o/results.csv");
       },
       "study s.yaml", 2, {"results table 'o/results.csv' is the scene file 'base.yaml'"});
+  // An output folder that is a file, or under one ("Not a directory", exit 1, after the checks).
+  for (const char* output : {"afile", "afile/sub"})
+    expect_refused(
+        [&](const fs::path& w) {
+          with("base.yaml", "s.yaml", std::string("scene: base.yaml\noutput: ") + output + "\n")(w);
+          write_bytes(w / "afile", "not a folder\n");
+        },
+        "study s.yaml --no-plots", 2, {"afile' is a file, not a folder; give 'output:' a folder"});
 }
 
 TEST(CliStudy, AFailedRunIsReportedAndTheOthersKept) {
