@@ -3,7 +3,9 @@
 #include <fcl/geometry/shape/ellipsoid.h>
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
+#include <string>
 
 #include "shapes/contains_slack.hpp"
 #include "shapes/fcl_embedding.hpp"
@@ -70,6 +72,9 @@ std::string EllipsoidShape<D>::definition_json() const {
   return std::string(R"({"kind": ")") + kKind + R"(", "semi_axes": )" + json_point<D>(axes_) + "}";
 }
 
+/// The smallest semi-axis a template may have, relative to its largest.
+constexpr double kSmallestAxisRatio = 1e-12;
+
 template <int D>
 ShapePrototype<D> ellipsoid_prototype(const ShapeParameters& p) {
   const ParameterReader r(p);
@@ -83,6 +88,14 @@ ShapePrototype<D> ellipsoid_prototype(const ShapeParameters& p) {
     a[k] = axes[k];
   }
   a /= a.maxCoeff();
+  // Measured: axes 1e-15 of the largest pack and validate; at 1e-300 the analysis, whose grid is
+  // sized by the equivalent radius (1e-100 of the largest axis), asked for more cells than exist.
+  if (a.minCoeff() < kSmallestAxisRatio)
+  {
+    char text[160];
+    std::snprintf(text, sizeof text, "the smallest semi-axis is %.3g of the largest, below %.3g", a.minCoeff(), kSmallestAxisRatio);
+    r.fail("axes", std::string(text) + ": no packing tells that ellipsoid from a disk (a needle); make it thicker");
+  }
   auto shape = std::make_shared<EllipsoidShape<D>>(a);
   ShapePrototype<D> proto{shape, {{"circumscribed_radius", 1.0}, {"semi_axis_a", a[0]}, {"semi_axis_b", a[1]}}};
   if constexpr (D == 3) proto.dimensions["semi_axis_c"] = a[2];

@@ -235,6 +235,13 @@ TEST(ShapeFamilies, BadEllipseAxes) {
   EXPECT_NE(error_of<2>(make_spec("ellipse", p)).find("needs 2 semi-axes in 2D (got 3)"), std::string::npos);
   p.lists["axes"] = {1.0, 0.0, 0.2};
   EXPECT_NE(error_of<3>(make_spec("ellipsoid", p)).find("semi-axis 1 must be positive"), std::string::npos);
+  // Positive but negligible: refused with the ratio (it ran out of memory in the analysis).
+  p.lists["axes"] = {1.0, 1e-300, 1.0};
+  EXPECT_NE(error_of<3>(make_spec("ellipsoid", p)).find("the smallest semi-axis is 1e-300 of the largest"), std::string::npos);
+  p.lists["axes"] = {1e-13, 0.2};
+  EXPECT_NE(error_of<2>(make_spec("ellipse", p)).find("below 1e-12"), std::string::npos) << error_of<2>(make_spec("ellipse", p));
+  p.lists["axes"] = {1.0, 1e-12, 1.0};
+  EXPECT_EQ(error_of<3>(make_spec("ellipsoid", p)), "");
 }
 
 TEST(ParameterReader, TypesRangesAndDefaults) {
