@@ -90,8 +90,7 @@ ShapePrototype<D> ellipsoid_prototype(const ShapeParameters& p) {
   a /= a.maxCoeff();
   // Measured: axes 1e-15 of the largest pack and validate; at 1e-300 the analysis, whose grid is
   // sized by the equivalent radius (1e-100 of the largest axis), asked for more cells than exist.
-  if (a.minCoeff() < kSmallestAxisRatio)
-  {
+  if (a.minCoeff() < kSmallestAxisRatio) {
     char text[160];
     std::snprintf(text, sizeof text, "the smallest semi-axis is %.3g of the largest, below %.3g", a.minCoeff(), kSmallestAxisRatio);
     r.fail("axes", std::string(text) + ": no packing tells that ellipsoid from a disk (a needle); make it thicker");
