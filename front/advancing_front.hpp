@@ -125,6 +125,7 @@ class AdvancingFront {
 
  private:
   using FrontEntry = front_parts::FrontEntry;
+  using Neighbour = front_parts::Neighbour;
 
   /// Shapes: the time stop is also checked before every solve (a pick among clusters of 50
   /// members took over a minute: a 20 s stop ended at 98 s); a sphere's pick is short enough for
@@ -135,7 +136,6 @@ class AdvancingFront {
       return stop_.time_limit_seconds &&
              std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count() >= *stop_.time_limit_seconds;
   }
-  using Neighbour = front_parts::Neighbour;
 
   Draft draw(Result& res) {
     ++res.counters.radii_drawn;
