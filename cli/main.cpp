@@ -1,5 +1,6 @@
 // The `frontpack` command. Exit codes: 0 success, 1 run-time failure (e.g. an output cannot be
-// written), 2 bad input (scene file, options), 3 the finished packing failed validation.
+// written), 2 bad input (scene file, options), 3 the finished packing failed validation, 4 it is
+// valid but placed nearly nothing of what the scene asks.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>

@@ -29,6 +29,10 @@ struct PackCheck {
   std::vector<std::pair<std::string, std::string>> info;         ///< after the common info
   std::string analysis_json;      ///< the full analysis (analysis_json.hpp), embedded in the record
   std::string summary_lines;      ///< the analysis' table, then the kind's own lines, each "  name  value\n"
+  /// Why a valid packing is not what the scene asks, when it placed nearly nothing of it (a
+  /// stacking that placed less than half its list, a region left empty): exit 4, one code for
+  /// every incomplete packing.
+  std::vector<std::string> incomplete;
 };
 
 /// The law a packing of spheres of `scene` is checked against (`pack` and `validate` alike): the

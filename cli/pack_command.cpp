@@ -92,12 +92,14 @@ int run(const Scene& scene, const PackCommandOptions& o, Make&& make) {
   const double check_seconds = since(t_check);
   const ValidationReport& v = check.validation;
 
+  std::string incomplete;
+  for (const std::string& why : check.incomplete) incomplete += (incomplete.empty() ? "" : "; ") + why;
   const RunRecord rec = pack_record<D, Kind>(scene, res, check, check_seconds);
 
   std::vector<std::string> spared;
   const double write_seconds = write_outputs(
       scene, o.record_path, rec, [&](OutputFormat format, const std::string& path) { write_packing<D>(format, path, P, rec); },
-      !v.ok, &spared);
+      !v.ok || !incomplete.empty(), &spared);
 
   if (!o.quiet) {
     print_run_header<D>(scene, container);
@@ -116,6 +118,12 @@ int run(const Scene& scene, const PackCommandOptions& o, Make&& make) {
     for (const std::string& path : spared)
       std::fprintf(stderr, "frontpack: '%s' is not written: it holds a file, which is kept\n", path.c_str());
     return 3;
+  }
+  if (!incomplete.empty()) {
+    std::fprintf(stderr, "frontpack: error: the packing is valid but incomplete: %s\n", incomplete.c_str());
+    for (const std::string& path : spared)
+      std::fprintf(stderr, "frontpack: '%s' is not written: it holds a file, which is kept\n", path.c_str());
+    return 4;
   }
   return 0;
 }

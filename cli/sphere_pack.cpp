@@ -196,6 +196,7 @@ void add_region_lines(const SceneRegions& regions, const Packing<3>& packing, Pa
                   static_cast<unsigned long long>(count[g]));
     c.summary_lines += line;
     c.metrics.emplace_back("region_" + regions.name(g) + "_volume_fraction", solid[g] / regions.volume(g));
+    if (count[g] == 0) c.incomplete.push_back("the region " + regions.name(g) + " holds no sphere (its law does not fit in it)");
   }
 }
 
@@ -340,6 +341,9 @@ PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth
                   static_cast<unsigned long long>(s->reshape_passes),
                   static_cast<unsigned long long>(s->reshape_moves), static_cast<unsigned long long>(s->unplaced), s->seconds);
     c.summary_lines += line;
+    if (2 * s->placed < s->asked)
+      c.incomplete.push_back("the graded stacking placed " + std::to_string(s->placed) + " of the " + std::to_string(s->asked) +
+                             " particles of its list");
     c.metrics.emplace_back("stacking_volume_fraction_asked", s->solid_asked / container.measure());
     c.counters.insert(c.counters.end(), {{"stacking_asked", s->asked},
                                          {"stacking_random", s->by_random},

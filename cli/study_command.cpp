@@ -199,6 +199,7 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o) {
     ++ended;
     const std::string status = study_value(out.rows[i], "status");
     if (status == "invalid") ++out.invalid;
+    if (status == "incomplete") ++out.incomplete;
     if (status == "failed") ++out.failed;
     if (o.on_run) o.on_run(runs[i], out.rows[i], ended, runs.size());
     if (!o.quiet) {
@@ -255,7 +256,7 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o) {
       const StudyRunFiles files = study_run_files(spec, runs[i]);
       ++out.ran;
       std::error_code ec;
-      if ((code == 0 || code == 3) && fs::is_regular_file(files.record, ec)) {
+      if ((code == 0 || code == 3 || code == 4) && fs::is_regular_file(files.record, ec)) {
         if (!spec.keep_packings) fs::remove(files.packing, ec);
         finish(i, read_text(files.record), "");
       } else {
@@ -295,8 +296,8 @@ int run_study_command(const std::string& study_path, StudyOptions options) {
     return 0;
   }
   if (!options.quiet) {
-    std::printf("frontpack study   %s: %zu runs (%zu kept from before, %zu run now), %zu invalid, %zu failed\n", study_path.c_str(),
-                out.runs, out.kept, out.ran, out.invalid, out.failed);
+    std::printf("frontpack study   %s: %zu runs (%zu kept from before, %zu run now), %zu invalid, %zu incomplete, %zu failed\n",
+                study_path.c_str(), out.runs, out.kept, out.ran, out.invalid, out.incomplete, out.failed);
     std::printf("  table          %s\n", out.csv_path.c_str());
     if (!out.plots.empty()) std::printf("  figures        %s (%zu)\n", (fs::path(spec.output_dir) / "plots").string().c_str(), out.plots.size());
   }
@@ -306,7 +307,7 @@ int run_study_command(const std::string& study_path, StudyOptions options) {
     return 1;
   }
   if (!out.plots_problem.empty()) return 1;
-  return out.invalid > 0 ? 3 : 0;
+  return out.invalid > 0 ? 3 : out.incomplete > 0 ? 4 : 0;
 }
 
 }  // namespace fp

@@ -32,7 +32,7 @@ struct StudyOutcome {
   std::string csv_path;
   std::vector<std::string> plots;  ///< the figures drawn
   std::string plots_problem;       ///< why there are none, when plots were asked for
-  std::size_t runs = 0, kept = 0, ran = 0, invalid = 0, failed = 0;
+  std::size_t runs = 0, kept = 0, ran = 0, invalid = 0, incomplete = 0, failed = 0;
   std::vector<StudyRow> rows;      ///< the CSV's rows, in its order
 };
 

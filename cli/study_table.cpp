@@ -48,8 +48,9 @@ StudyRow study_row(const StudySpec& spec, const StudyRun& run, const std::string
   }
   const Json record = Json::parse(record_text);
   const Json info = record.value("info", Json::object());
-  add(row, "status", info.value("validation", std::string()) == "ok" ? "ok" : "invalid");
-  add(row, "message", "");
+  const bool valid = info.value("validation", std::string()) == "ok";
+  add(row, "status", !valid ? "invalid" : info.contains("incomplete") ? "incomplete" : "ok");
+  add(row, "message", valid ? info.value("incomplete", std::string()) : "");
   flatten(record, "", row);
   return row;
 }

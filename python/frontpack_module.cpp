@@ -274,6 +274,7 @@ py::dict study(const py::object& source, long long jobs, bool plots, const py::o
   d["kept"] = out.kept;
   d["ran"] = out.ran;
   d["invalid"] = out.invalid;
+  d["incomplete"] = out.incomplete;
   d["failed"] = out.failed;
   py::list rows;
   for (const StudyRow& r : out.rows) rows.append(row_dict(r));
@@ -390,7 +391,7 @@ PYBIND11_MODULE(frontpack, m) {
         py::arg("progress") = py::none(), py::arg("executable") = py::none(),
         "Runs a study as `frontpack study` does (a path to a study file, or a dict with its schema; a dict's relative "
         "paths start at the working directory): every run in its own frontpack process, `jobs` at once (0: the "
-        "study's), done runs kept. Returns {'folder', 'csv', 'figures', 'runs', 'kept', 'ran', 'invalid', 'failed', "
+        "study's), done runs kept. Returns {'folder', 'csv', 'figures', 'runs', 'kept', 'ran', 'invalid', 'incomplete', 'failed', "
         "'rows'}: rows are the CSV's, as dicts of numbers, flags and text. progress(done, total, row) after each run; "
         "an exception in it (or Ctrl-C) stops the study (its runs are killed). executable: the frontpack command "
         "(default: the one built with this module).");

@@ -106,7 +106,7 @@ def main():
     with open(request_path) as f:
         request = json.load(f)
     with open(csv_path, newline="") as f:
-        rows = [r for r in csv.DictReader(f) if r.get("status") in ("ok", "invalid")]
+        rows = [r for r in csv.DictReader(f) if r.get("status") in ("ok", "invalid", "incomplete")]
     parameters = request["parameters"]
     seeds = request["seeds"]
     drawn = []

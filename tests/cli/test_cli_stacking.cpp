@@ -95,6 +95,21 @@ TEST(CliStacking, BeyondTheLawsReachIsSaidAndFailsTheRadiiTest) {
   EXPECT_NE(r.out.find("not reached"), std::string::npos) << r.out;
 }
 
+// A stacking that places nearly nothing (every try at 0: 1 of 252) is valid but incomplete: exit 4,
+// said on stderr and in the record, and no file replaced.
+TEST(CliStacking, PlacingNearlyNothingIsIncomplete) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", std::string(kBox3) + "packer: {method: stacking, random_tries: 0, near_tries: 0, "
+                                                          "two_contact_tries: 0, nuclei: 0, voids: false}\n"
+                                                          "target: {solid_fraction: 0.5}\n");
+  write_bytes(dir.work() / "old.csv", "an earlier packing\n");
+  const RunResult r = run_frontpack(dir, "pack s.yaml -o old.csv --record r.json");
+  EXPECT_EQ(r.exit_code, 4) << r.out << r.err;
+  EXPECT_NE(r.err.find("the packing is valid but incomplete: the graded stacking placed 1 of the"), std::string::npos) << r.err;
+  EXPECT_EQ(read_bytes(dir.work() / "old.csv"), "an earlier packing\n");
+  EXPECT_NE(read_bytes(dir.work() / "r.json").find("\"incomplete\": \"the graded stacking placed 1 of the"), std::string::npos);
+}
+
 TEST(CliStacking, BadKeysAreRefusedAndWriteNothing) {
   TempDir dir;
   const std::pair<std::string, const char*> cases[] = {

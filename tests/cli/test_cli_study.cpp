@@ -130,7 +130,7 @@ TEST(CliStudy, ThreeByThreeByThreeSeedsAreTheCommandLinesRuns) {
   EXPECT_FALSE(fs::exists(dir.work() / "s.out"));  // listed, nothing run or made
   const RunResult r = run_frontpack(dir, "study s.yaml");
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
-  EXPECT_NE(r.out.find("27 runs (0 kept from before, 27 run now), 0 invalid, 0 failed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("27 runs (0 kept from before, 27 run now), 0 invalid, 0 incomplete, 0 failed"), std::string::npos) << r.out;
   const auto rows = csv_rows(read_bytes(dir.work() / "s.out/results.csv"));
   ASSERT_EQ(rows.size(), 27u);
   // The grid in order (the last parameter fastest, then the seeds), each run checked against
@@ -393,6 +393,24 @@ TEST(CliStudy, AFailedRunIsReportedAndTheOthersKept) {
   EXPECT_EQ(rows[0].at("status"), "ok");
   EXPECT_EQ(rows[1].at("status"), "failed");
   EXPECT_NE(rows[1].at("message").find("exit"), std::string::npos) << rows[1].at("message");
+}
+
+// A run that places nearly nothing (a stacking with every try at 0: exit 4) is a row marked
+// incomplete with its reason; the study exits 4.
+TEST(CliStudy, AnIncompleteRunIsMarkedSo) {
+  TempDir dir;
+  write_bytes(dir.work() / "base.yaml", std::string(kBase) + "target: {solid_fraction: 0.4}\n");
+  write_bytes(dir.work() / "s.yaml",
+              "scene: base.yaml\nparameters:\n  - key: packer\n    values: ['{method: stacking}', '{method: stacking, random_tries: 0, "
+              "near_tries: 0, two_contact_tries: 0, nuclei: 0, voids: false}']\n    name: stacking\n");
+  const RunResult r = run_frontpack(dir, "study s.yaml --no-plots");
+  EXPECT_EQ(r.exit_code, 4) << r.out << r.err;
+  EXPECT_NE(r.out.find("0 invalid, 1 incomplete, 0 failed"), std::string::npos) << r.out;
+  const auto rows = csv_rows(read_bytes(dir.work() / "s.out/results.csv"));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].at("status"), "ok") << rows[0].at("message");
+  EXPECT_EQ(rows[1].at("status"), "incomplete");
+  EXPECT_NE(rows[1].at("message").find("the graded stacking placed"), std::string::npos) << rows[1].at("message");
 }
 
 }  // namespace

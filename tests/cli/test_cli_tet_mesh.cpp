@@ -111,6 +111,18 @@ TEST(CliTetMesh, ASurfaceContainerIsMeshedFirst) {
   EXPECT_EQ(read_bytes(dir.work() / "again.csv"), read_bytes(dir.work() / "out.csv")) << "the same mesh, the same spheres";
 }
 
+// A region whose law does not fit in it gets no sphere: the packing is valid but incomplete (exit 4).
+TEST(CliTetMesh, ARegionLeftEmptyIsIncomplete) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml",
+              scene_for(source_path("tests/data/meshes/msh/two_boxes_v4.1_binary.msh"),
+                        "packer: {method: tet_mesh}\nregions:\n  upper: {radius: {distribution: uniform, min: 0.3, max: 0.4}}\n"));
+  const RunResult r = run_frontpack(dir, "pack s.yaml -o out.csv");
+  EXPECT_EQ(r.exit_code, 4) << r.out << r.err;
+  EXPECT_NE(r.err.find("incomplete: the region upper holds no sphere"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(dir.work() / "out.csv")) << "a new path is written: the packing is valid";
+}
+
 TEST(CliTetMesh, RegionsKeepTheirOwnRadiiAndSolidFraction) {
   // The two physical volumes Gmsh wrote (lower z < 0.5, upper z > 0.5): the upper one with smaller
   // spheres and a lower solid fraction.
