@@ -22,8 +22,7 @@ std::string usage_error_text(const CLI::ParseError& e, const std::string& comman
            help;
   if (std::regex_match(what, m, std::regex(R"((--?\S+) is required)")))
     return "missing the option " + m[1].str() + help;
-  if (std::regex_match(what, m, std::regex(R"((\S+) is required)")))
-  {
+  if (std::regex_match(what, m, std::regex(R"((\S+) is required)"))) {
     std::string name = m[1].str();
     for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     return "missing the argument " + name + " (frontpack " + command + " " + name + " ...)";
