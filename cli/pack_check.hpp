@@ -33,6 +33,13 @@ struct PackCheck {
   /// stacking that placed less than half its list, a region left empty): exit 4, one code for
   /// every incomplete packing.
   std::vector<std::string> incomplete;
+
+  /// The reasons of `incomplete` in one text ("" when complete): stderr's and the record's.
+  std::string incomplete_text() const {
+    std::string why;
+    for (const std::string& w : incomplete) why += (why.empty() ? "" : "; ") + w;
+    return why;
+  }
 };
 
 /// The law a packing of spheres of `scene` is checked against (`pack` and `validate` alike): the

@@ -92,8 +92,7 @@ int run(const Scene& scene, const PackCommandOptions& o, Make&& make) {
   const double check_seconds = since(t_check);
   const ValidationReport& v = check.validation;
 
-  std::string incomplete;
-  for (const std::string& why : check.incomplete) incomplete += (incomplete.empty() ? "" : "; ") + why;
+  const std::string incomplete = check.incomplete_text();
   const RunRecord rec = pack_record<D, Kind>(scene, res, check, check_seconds);
 
   std::vector<std::string> spared;
@@ -113,19 +112,12 @@ int run(const Scene& scene, const PackCommandOptions& o, Make&& make) {
                 check.timing_name.c_str(), check_seconds, write_seconds);
     print_output_lines(scene, o.record_path, spared);
   }
-  if (!v.ok) {
-    std::fprintf(stderr, "frontpack: error: the packing failed validation:\n%s\n", v.summary().c_str());
-    for (const std::string& path : spared)
-      std::fprintf(stderr, "frontpack: '%s' is not written: it holds a file, which is kept\n", path.c_str());
-    return 3;
-  }
-  if (!incomplete.empty()) {
-    std::fprintf(stderr, "frontpack: error: the packing is valid but incomplete: %s\n", incomplete.c_str());
-    for (const std::string& path : spared)
-      std::fprintf(stderr, "frontpack: '%s' is not written: it holds a file, which is kept\n", path.c_str());
-    return 4;
-  }
-  return 0;
+  if (v.ok && incomplete.empty()) return 0;
+  if (!v.ok) std::fprintf(stderr, "frontpack: error: the packing failed validation:\n%s\n", v.summary().c_str());
+  else std::fprintf(stderr, "frontpack: error: the packing is valid but incomplete: %s\n", incomplete.c_str());
+  for (const std::string& path : spared)
+    std::fprintf(stderr, "frontpack: '%s' is not written: it holds a file, which is kept\n", path.c_str());
+  return v.ok ? 4 : 3;
 }
 
 template <int D, class Kind>
