@@ -19,9 +19,9 @@ class ClusterShape final : public Shape<D> {
   ClusterShape(std::vector<Ball<D>> members, double measure);
   static constexpr const char* kKind = "cluster";
   /// A particle template's largest number of members. The exact volume of the union grows as
-  /// about members^2.5 (measured, 3D, members overlapping at random in a cube of 2 radii: 100 in
-  /// 1.5 s, 200 in 8.8 s, 400 in 51 s, 1,000 not done in 5 min) and each contact problem of the
-  /// ball wrapper faster still (5 members: 66 particles/s, 20: 0.4/s). Clumps of DEM practice
+  /// about members^2.5 (members overlapping at random in a cube of 2 radii: 100 in 2.5 s, 200 in
+  /// 10 s; 1,000 not done in 5 min) and each contact problem of the ball wrapper faster still (5
+  /// members: 70 particles/s, 20: 0.7/s; experiments/extremes/RESULTS.md). Clumps of DEM practice
   /// have from 2 to a few tens.
   static constexpr int kMaxMembers = 200;
   const std::vector<Ball<D>>& members() const { return members_; }

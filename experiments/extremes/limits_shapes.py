@@ -1,0 +1,68 @@
+"""Measures behind three limits of the scene check (README "What is guaranteed"): cluster members,
+and the rare-large-class mixture the front does not fill yet.
+
+  FRONTPACK=build/cli/frontpack /usr/bin/python3 experiments/extremes/limits_shapes.py
+
+Clusters: n members at random in a cube of side 2 (radii 0.2-0.4, random.seed(n)), in a box of 6,
+sizes U[0.5, 1]. 'check' is the whole run with stop.particles 1 (the union's exact volume
+dominates); 'rate' the particles a 10 s time stop leaves, and when the stop ended the pack phase.
+Mixture: radii 0.01 and 0.1 at 1000 : 1 by count in a box of 0.5, radius_pool 4 and 16."""
+import json
+import os
+import random
+import subprocess
+import tempfile
+import time
+
+FRONTPACK = os.environ.get("FRONTPACK", "frontpack")
+
+
+def run(scene_text, extra=()):
+    with tempfile.TemporaryDirectory() as d:
+        scene = os.path.join(d, "s.yaml")
+        with open(scene, "w") as f:
+            f.write(scene_text)
+        t0 = time.monotonic()
+        p = subprocess.run([FRONTPACK, "pack", scene, "-o", os.path.join(d, "p.csv"), "--record", os.path.join(d, "r.json"),
+                            "-q", *extra], capture_output=True, text=True)
+        wall = time.monotonic() - t0
+        record = json.load(open(os.path.join(d, "r.json"))) if os.path.exists(os.path.join(d, "r.json")) else None
+        radii = []
+        if os.path.exists(os.path.join(d, "p.csv")):
+            for line in open(os.path.join(d, "p.csv")).readlines()[1:]:
+                radii.append(float(line.split(",")[-1]))
+        return p.returncode, wall, record, radii
+
+
+def cluster(n, stop):
+    random.seed(n)
+    centers = [[round(random.uniform(-1, 1), 4) for _ in range(3)] for _ in range(n)]
+    radii = [round(random.uniform(0.2, 0.4), 4) for _ in range(n)]
+    return (f"dimension: 3\ncontainer: {{type: box, min: [0,0,0], max: [6,6,6]}}\nstop: {stop}\nparticles:\n"
+            f"  - shape: cluster\n    centers: {centers}\n    radii: {radii}\n"
+            f"    size: {{distribution: uniform, min: 0.5, max: 1}}\n")
+
+
+print("| members | check (s, whole run, 1 particle) | placed in a 10 s stop | pack phase (s) |")
+print("|---|---|---|---|")
+for n in (5, 10, 20, 50, 100, 200):
+    _, check_wall, _, _ = run(cluster(n, "{particles: 1}"))
+    rate = "-"
+    if n <= 50:
+        code, wall, rec, _ = run(cluster(n, "{time: 10}"))
+        rate = f"{rec['n']} | {rec['timings']['pack']:.2f}" if rec else f"exit {code}"
+    else:
+        rate = "- | -"
+    print(f"| {n} | {check_wall:.2f} | {rate} |")
+
+print()
+print("| radius_pool | placed | large placed | container VF | core VF | radii test | exit |")
+print("|---|---|---|---|---|---|---|")
+mix = ("dimension: 3\ncontainer: {type: box, min: [0,0,0], max: [0.5,0.5,0.5]}\n"
+       "particles: {radius: {distribution: discrete, values: [[0.01, 1000], [0.1, 1]]}}\n")
+for pool in (4, 16):
+    code, wall, rec, radii = run(mix, ["--set", f"packer.radius_pool={pool}"])
+    m = rec["metrics"]
+    test = rec["analysis"]["validation"].get("radii", {})
+    print(f"| {pool} | {rec['n']} | {sum(r > 0.05 for r in radii)} | {m['volume_fraction_container']:.3f} | "
+          f"{m['volume_fraction_core']:.3f} | p = {test.get('p', float('nan')):.2g} | {code} |")
