@@ -30,11 +30,14 @@ double atom_excess(const Atoms& atoms, double r) {
 }  // namespace
 
 std::string RadiiFit::describe() const {
-  char buf[160];
+  char buf[240];
   if (!computed()) return "not computed";
   if (test == "constant")
     std::snprintf(buf, sizeof buf, "constant: max |r - value| = %.3g value (%llu radii differ), p = %.3g", statistic,
                   static_cast<unsigned long long>(off_support), p);
+  else if (test == "chi-square" && rare)
+    std::snprintf(buf, sizeof buf, "chi-square X2 = %.4g (%d dof%s) and %zu rare value%s counted exactly (smallest p = %.3g), p = %.3g",
+                  statistic, dof, off_support ? ", radii matching no value" : "", rare, rare == 1 ? "" : "s", rare_p, p);
   else if (test == "chi-square")
     std::snprintf(buf, sizeof buf, "chi-square X2 = %.4g (%d dof%s), p = %.3g", statistic, dof,
                   off_support ? ", radii matching no value" : "", p);
@@ -88,6 +91,8 @@ RadiiFit radii_fit(std::vector<double> radii, const RadiusDistribution& dist) {
   const ChiSquareResult c = chi_square_counts(counts, probabilities);
   f.statistic = c.statistic;
   f.dof = c.dof;
+  f.rare = c.rare;
+  f.rare_p = c.rare_p;
   f.p = c.p;
   return f;
 }

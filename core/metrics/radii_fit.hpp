@@ -2,7 +2,8 @@
 // The goodness-of-fit test of a packing's radii against the requested size distribution, chosen
 // by the kind of law (RadiusDistribution::atoms()):
 //   constant   every radius equals the value within kRadiusSlack (p = 1, else 0);
-//   discrete   Pearson's chi-square on the counts per value (core/sampling/chi_square_test.hpp);
+//   discrete   Pearson's chi-square on the counts per value, and the exact binomial test of each
+//              value expected fewer than 5 times (core/sampling/chi_square_test.hpp);
 //              a radius matching no value (within kRadiusSlack) has probability 0: p = 0;
 //   continuous one-sample Kolmogorov-Smirnov (core/sampling/ks_test.hpp).
 // One definition for `pack`, `validate` and `analyze`. The front leaves its last `radius_pool`
@@ -27,7 +28,9 @@ struct RadiiFit {
   /// constant: max |r - value| / value; chi-square: Pearson's X^2 (+inf with off_support);
   /// K-S: D_n = sup |F_n - F|.
   double statistic = std::numeric_limits<double>::quiet_NaN();
-  int dof = 0;                ///< chi-square: pooled classes - 1 (0: one class, p = 1)
+  int dof = 0;                ///< chi-square: pooled classes - 1 (0: one class)
+  std::size_t rare = 0;       ///< chi-square: values expected fewer than 5 times, tested exactly too
+  double rare_p = 1.0;        ///< chi-square: the smallest exact p-value of those
   double p = std::numeric_limits<double>::quiet_NaN();
   std::uint64_t off_support = 0;  ///< constant/discrete: radii matching none of the values
 

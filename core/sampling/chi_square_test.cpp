@@ -1,5 +1,6 @@
 #include "core/sampling/chi_square_test.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -37,7 +38,33 @@ double gamma_q_fraction(double a, double x) {
   return std::exp(-x + a * std::log(x) - std::lgamma(a)) * h;
 }
 
+// log P(X = k) for X binomial(n, p).
+double binomial_log_pmf(std::uint64_t k, std::uint64_t n, double p) {
+  const double kd = static_cast<double>(k), nd = static_cast<double>(n);
+  return std::lgamma(nd + 1) - std::lgamma(kd + 1) - std::lgamma(nd - kd + 1) + kd * std::log(p) + (nd - kd) * std::log1p(-p);
+}
+
+// P(X <= k) (lower) or P(X >= k), summed from k outwards: the terms fall off beyond the mode, so
+// the sum stops when they no longer count (the tail taken is the one away from the mean).
+double binomial_tail(std::uint64_t k, std::uint64_t n, double p, bool lower) {
+  double sum = 0.0;
+  for (std::uint64_t j = k;; lower ? --j : ++j) {
+    const double term = std::exp(binomial_log_pmf(j, n, p));
+    sum += term;
+    if (term < sum * 1e-17 || (lower ? j == 0 : j == n)) break;
+  }
+  return std::min(1.0, sum);
+}
+
 }  // namespace
+
+double binomial_two_sided_p(std::uint64_t k, std::uint64_t n, double p) {
+  if (!(p > 0.0 && p < 1.0) || k > n) throw std::invalid_argument("binomial_two_sided_p: needs 0 < p < 1 and k <= n");
+  const double mean = static_cast<double>(n) * p;
+  // The tail away from the mean, summed; the other is at least about one half.
+  const double tail = static_cast<double>(k) <= mean ? binomial_tail(k, n, p, true) : binomial_tail(k, n, p, false);
+  return std::min(1.0, 2.0 * tail);
+}
 
 double chi_square_survival(double x, int dof) {
   if (dof < 1) throw std::invalid_argument("chi_square_survival: dof must be >= 1");
@@ -83,9 +110,19 @@ ChiSquareResult chi_square_counts(const std::vector<std::uint64_t>& observed, co
   ChiSquareResult r;
   r.classes = obs.size();
   r.dof = static_cast<int>(r.classes) - 1;
-  if (r.dof == 0) return r;  // one class: its count is n whatever the law, no evidence either way
-  for (std::size_t k = 0; k < obs.size(); ++k) r.statistic += (obs[k] - expd[k]) * (obs[k] - expd[k]) / expd[k];
-  r.p = chi_square_survival(r.statistic, r.dof);
+  // One class: its count is n whatever the law, no evidence either way.
+  double smallest = 1.0;
+  if (r.dof > 0) {
+    for (std::size_t k = 0; k < obs.size(); ++k) r.statistic += (obs[k] - expd[k]) * (obs[k] - expd[k]) / expd[k];
+    smallest = chi_square_survival(r.statistic, r.dof);
+  }
+  for (std::size_t k = 0; k < observed.size() && observed.size() > 1; ++k) {
+    if (!(n * probabilities[k] < 5.0) || !(probabilities[k] < 1.0)) continue;
+    ++r.rare;
+    r.rare_p = std::min(r.rare_p, binomial_two_sided_p(observed[k], total, probabilities[k]));
+  }
+  const std::size_t tests = (r.dof > 0 ? 1 : 0) + r.rare;
+  r.p = r.rare ? std::min(1.0, static_cast<double>(tests) * std::min(smallest, r.rare_p)) : smallest;
   return r;
 }
 

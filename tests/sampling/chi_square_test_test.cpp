@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -68,6 +69,45 @@ TEST(ChiSquareCounts, HandComputedAndPooled) {
   EXPECT_THROW(chi_square_counts({1, 2}, {1.0}), std::invalid_argument);
   EXPECT_THROW(chi_square_counts({0, 0}, {0.5, 0.5}), std::invalid_argument);
   EXPECT_THROW(chi_square_counts({1, 2}, {1.0, 0.0}), std::invalid_argument);
+}
+
+TEST(ChiSquareCounts, RareClassesAreCountedExactly) {
+  // Binomial tails by hand: P(X = 0) = 0.996^1000, P(X <= 1) adds 1000 * 0.004 * 0.996^999.
+  const double p0 = std::pow(0.996, 1000.0), p1 = 1000 * 0.004 * std::pow(0.996, 999.0);
+  EXPECT_NEAR(binomial_two_sided_p(0, 1000, 0.004), 2 * p0, 1e-14);
+  EXPECT_NEAR(binomial_two_sided_p(1, 1000, 0.004), 2 * (p0 + p1), 1e-13);
+  EXPECT_NEAR(binomial_two_sided_p(3, 3, 0.5), 0.25, 1e-15);  // upper tail: P(X = 3) = 1/8
+  EXPECT_EQ(binomial_two_sided_p(4, 1000, 0.004), 1.0);       // at the mean: both tails over one half
+  EXPECT_LT(binomial_two_sided_p(40, 1000, 0.004), 1e-15);    // ten times the mean
+  EXPECT_THROW(binomial_two_sided_p(2, 1, 0.5), std::invalid_argument);
+  EXPECT_THROW(binomial_two_sided_p(0, 1, 1.0), std::invalid_argument);
+  // A class expected 4 times (pooled for the chi-square) and never seen: before, p = 1 (one
+  // pooled class, nothing to test); now its exact p-value, the only test.
+  const ChiSquareResult gone = chi_square_counts({5000, 0}, {0.9992, 0.0008});
+  EXPECT_EQ(gone.dof, 0);
+  EXPECT_EQ(gone.rare, 1u);
+  EXPECT_NEAR(gone.p, 2 * std::pow(0.9992, 5000.0), 1e-12);
+  // Two classes tested by the chi-square and a third expected 2.95 times, missing: two tests,
+  // the smaller p-value times 2.
+  const ChiSquareResult three = chi_square_counts({29000, 30000, 0}, {0.49, 0.50995, 0.00005});
+  EXPECT_EQ(three.dof, 1);
+  EXPECT_EQ(three.rare, 1u);
+  EXPECT_NEAR(three.rare_p, 2 * std::pow(0.99995, 59000.0), 1e-12);
+  EXPECT_NEAR(three.p, std::min(1.0, 2 * std::min(chi_square_survival(three.statistic, 1), three.rare_p)), 1e-15);
+}
+
+TEST(ChiSquareCounts, RareClassesKeepTheLevelUnderTheNull) {
+  // 2000 samples of n = 300 from {0.97, 0.02, 0.01} (the last two expected 6 and 3): the
+  // combined test rejects at most about its level.
+  const DiscreteRadius law({{1.0, 0.97}, {2.0, 0.02}, {3.0, 0.01}});
+  Rng rng(78);
+  int rejected = 0;
+  for (int t = 0; t < 2000; ++t) {
+    std::vector<std::uint64_t> counts(3, 0);
+    for (int k = 0; k < 300; ++k) ++counts[static_cast<std::size_t>(law.sample(rng)) - 1];
+    rejected += chi_square_counts(counts, {0.97, 0.02, 0.01}).p < 0.05 ? 1 : 0;
+  }
+  EXPECT_LT(rejected, 0.07 * 2000);
 }
 
 TEST(ChiSquareCounts, RejectionRateUnderTheNullIsNominalAndASkewIsSeen) {
