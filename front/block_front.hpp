@@ -344,6 +344,7 @@ class BlockFront {
       for (std::size_t i = 0; i < Model::size(r); ++i, ++flat)
         if (keep.empty() || keep[flat]) Model::append(out, r, i), ++kept;
       out.counters += r.counters;
+      out.never_fit_radii.insert(out.never_fit_radii.end(), r.never_fit_radii.begin(), r.never_fit_radii.end());
       out.solver += r.solver;
       out.grid_bytes = std::max(out.grid_bytes, r.grid_bytes);
       out.grid_levels = std::max(out.grid_levels, r.grid_levels);

@@ -27,6 +27,9 @@ struct FrontCounters {
   std::uint64_t wall_bodies = 0;          ///< walls offered to the solver as bodies
   std::uint64_t radii_drawn = 0;          ///< radii drawn from the distribution
   std::uint64_t radii_unplaced = 0;       ///< radii drawn but never placed (the pool at the end)
+  std::uint64_t radii_waited = 0;         ///< drafts set aside as waiting (no room at many s0 in a row)
+  std::uint64_t radii_never_fit = 0;      ///< of radii_unplaced: waiting drafts that never found room
+  std::uint64_t radii_dropped = 0;        ///< waiting drafts dropped onto the front (one contact)
   std::uint64_t max_neighbours = 0;       ///< largest |V| seen (bounded by r_max/r_min, paper 002 Sect. 6)
   std::uint64_t voids_reopened = 0;       ///< voids found after F ran empty, growth resumed from their surroundings
   std::uint64_t voids_seeded = 0;         ///< voids found after F ran empty and given a new seed particle
@@ -61,6 +64,9 @@ struct FrontCounters {
       {"wall_bodies", &FrontCounters::wall_bodies},
       {"radii_drawn", &FrontCounters::radii_drawn},
       {"radii_unplaced", &FrontCounters::radii_unplaced},
+      {"radii_waited", &FrontCounters::radii_waited},
+      {"radii_never_fit", &FrontCounters::radii_never_fit},
+      {"radii_dropped", &FrontCounters::radii_dropped},
       {"max_neighbours", &FrontCounters::max_neighbours},
       {"voids_reopened", &FrontCounters::voids_reopened},
       {"voids_seeded", &FrontCounters::voids_seeded},
@@ -130,6 +136,9 @@ struct PackResult {
   std::size_t grid_bytes = 0;
   int grid_levels = 0;
   std::vector<RankWork> ranks;      ///< per MPI rank, when several grew it (empty otherwise)
+  /// The (circumscribed) radii of the drafts that waited and never found room (counted by
+  /// counters.radii_never_fit; across MPI ranks only rank 0's are listed).
+  std::vector<double> never_fit_radii;
 };
 
 /// Progress report for long runs: particles so far, elapsed seconds, volume fraction so far.

@@ -32,7 +32,7 @@ class SphereModel {
   using Result = PackResult<D>;
   static constexpr int kMaxPlacements = ContactSolver<D>::kMaxSolutions;
   static constexpr bool kTwoContactFallback = D == 3;  ///< 3D: s0 and one body when no pair has a position
-  static constexpr double kVoidSpacing = 2.0;          ///< void lattice spacing, in r_max
+  static constexpr double kVoidSpacing = 2.0;          ///< void lattice spacing, in the sought draft's radius
   static constexpr double kVoidPoints = double(1 << 24);
   static constexpr std::uint64_t kClockEvery = 1024;   ///< picks between clock reads (a pick costs ~10 us)
   static constexpr bool kProbeSmallestByDefault = true;  ///< probe_smallest: auto (narrow ratios)
