@@ -33,7 +33,7 @@ PackOutcome pack_as(const Scene& scene, const ProgressFn& progress) {
   const double check_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   PackOutcome out;
   out.record = pack_record<D, Kind>(scene, res, check, check_seconds);
-  out.valid = check.validation.ok;
+  out.valid = check.valid();
   out.validation = check.validation.one_line();
   out.summary = check.summary_lines;
   out.packed.scene = scene;

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "core/io/analysis_json.hpp"
+#include "core/metrics/radii_fit.hpp"
 #include "core/sampling/uniform_radius.hpp"
 
 namespace fp {
@@ -30,6 +32,28 @@ RadiusDistributionPtr radii_to_check(const Scene& scene) {
   for (const RegionSpec& r : scene.regions)
     if (r.radii) lo = std::min(lo, r.radii->r_min()), hi = std::max(hi, r.radii->r_max());
   return lo < hi ? std::make_shared<const UniformRadius>(lo, hi) : law;
+}
+
+void add_never_fit_lines(PackCheck& c, const std::vector<double>& never_fit, std::vector<double> placed,
+                         const RadiusDistribution* law) {
+  if (never_fit.empty()) return;
+  const double largest = *std::max_element(never_fit.begin(), never_fit.end());
+  char line[200];
+  std::snprintf(line, sizeof line, "  no room for   %zu drafts (largest radius %.6g) waited and were left out\n", never_fit.size(), largest);
+  c.summary_lines += line;
+  const ValidationReport& v = c.validation;
+  const bool only_sizes = !v.ok && !v.empty() && v.overlap_count + v.outside_count + v.radius_count + v.non_finite_count == 0;
+  if (!only_sizes || !law || v.sizes.size() != 1 || !v.sizes[0].computed()) return;
+  const double level = v.test_level();
+  placed.insert(placed.end(), never_fit.begin(), never_fit.end());
+  const RadiiFit with = radii_fit(std::move(placed), *law);
+  if (!with.passes(level)) return;
+  c.sizes_short_of_room = true;
+  std::snprintf(line, sizeof line,
+                "%zu drafted radii (the largest %.6g) found no room once the packing had grown around them; the placed "
+                "radii fail the size test (p = %.3g), with them it passes (p = %.3g)",
+                never_fit.size(), largest, v.sizes[0].p, with.p);
+  c.incomplete.push_back(line);
 }
 
 PackCheck pack_check_of(const ValidationReport& validation, double volume_fraction) {

@@ -33,6 +33,14 @@ struct PackCheck {
   /// stacking that placed less than half its list, a region left empty): exit 4, one code for
   /// every incomplete packing.
   std::vector<std::string> incomplete;
+  /// The only failure is the size test, and the drafts that never found room explain it (the
+  /// test of the placed radii with theirs passes): a valid packing short of the law, exit 4.
+  bool sizes_short_of_room = false;
+
+  /// Valid, or short of its size law only for want of room (exit 4 rather than 3).
+  bool valid() const { return validation.ok || sizes_short_of_room; }
+  /// The record's verdict: "ok", "sizes short of room" or "FAILED".
+  const char* verdict() const { return validation.ok ? "ok" : sizes_short_of_room ? "sizes short of room" : "FAILED"; }
 
   /// The reasons of `incomplete` in one text ("" when complete): stderr's and the record's.
   std::string incomplete_text() const {
@@ -58,6 +66,14 @@ double overlap_tolerance(const Scene& scene);
 /// the voids' own (method tet_mesh, densify radii: fit, regions) or least squares moved them
 /// within it (least_squares radii: range), else kRadiiAlpha.
 double radii_alpha_of(const Scene& scene);
+
+/// The drafts a front set aside and never placed (`never_fit`: their radii): a summary line, and
+/// when they alone make the size test of `placed` against `law` fail (at the validation's level;
+/// with them it passes), the packing is short of its law for want of room: sizes_short_of_room
+/// and the reason in `incomplete`. A class far larger than the rest needs room the growing
+/// packing may no longer leave (a container a few of its diameters wide).
+void add_never_fit_lines(PackCheck& c, const std::vector<double>& never_fit, std::vector<double> placed,
+                         const RadiusDistribution* law);
 
 /// The record's figures of an analysis (its validation included) and its table as summary lines.
 PackCheck pack_check_of(const PackingAnalysis& analysis);

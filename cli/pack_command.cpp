@@ -98,7 +98,7 @@ int run(const Scene& scene, const PackCommandOptions& o, Make&& make) {
   std::vector<std::string> spared;
   const double write_seconds = write_outputs(
       scene, o.record_path, rec, [&](OutputFormat format, const std::string& path) { write_packing<D>(format, path, P, rec); },
-      !v.ok || !incomplete.empty(), &spared);
+      !check.valid() || !incomplete.empty(), &spared);
 
   if (!o.quiet) {
     print_run_header<D>(scene, container);
@@ -113,11 +113,11 @@ int run(const Scene& scene, const PackCommandOptions& o, Make&& make) {
     print_output_lines(scene, o.record_path, spared);
   }
   if (v.ok && incomplete.empty()) return 0;
-  if (!v.ok) std::fprintf(stderr, "frontpack: error: the packing failed validation:\n%s\n", v.summary().c_str());
+  if (!check.valid()) std::fprintf(stderr, "frontpack: error: the packing failed validation:\n%s\n", v.summary().c_str());
   else std::fprintf(stderr, "frontpack: error: the packing is valid but incomplete: %s\n", incomplete.c_str());
   for (const std::string& path : spared)
     std::fprintf(stderr, "frontpack: '%s' is not written: it holds a file, which is kept\n", path.c_str());
-  return v.ok ? 4 : 3;
+  return check.valid() ? 4 : 3;
 }
 
 template <int D, class Kind>

@@ -98,7 +98,7 @@ RunRecord pack_record(const Scene& scene, const typename Kind::Result& res, cons
       {"contacts", v.contacts}, {"wall_contacts", v.wall_contacts}, {"pairs_checked", v.pairs_checked}};
   rec.counters.insert(rec.counters.end(), common.begin(), common.end());
   rec.counters.insert(rec.counters.end(), check.counters.begin(), check.counters.end());
-  rec.info = {{"stop_reason", Kind::stop_text(res)}, {"validation", v.ok ? "ok" : "FAILED"}};
+  rec.info = {{"stop_reason", Kind::stop_text(res)}, {"validation", check.verdict()}};
   rec.info.insert(rec.info.end(), check.info.begin(), check.info.end());
   if (!check.incomplete.empty()) rec.info.emplace_back("incomplete", check.incomplete_text());
   for (std::size_t r = 0; r < res.ranks.size(); ++r) rec.info.emplace_back("rank_" + std::to_string(r), rank_work_text(res.ranks[r]));

@@ -103,6 +103,7 @@ PackCheck ShapePack<D>::check(const Scene& scene, const Result& res, CheckDepth 
                 static_cast<unsigned long long>(s.gap_evaluations), static_cast<unsigned long long>(s.fcl_queries));
   c.summary_lines += buf;
   add_target_lines(c, scene, res.thinned, res.solid_measure, container.measure(), stop_text(res));
+  add_never_fit_lines(c, res.never_fit_radii, {}, nullptr);  // a line only: the size tests are per template
   return c;
 }
 

@@ -48,7 +48,8 @@ StudyRow study_row(const StudySpec& spec, const StudyRun& run, const std::string
   }
   const Json record = Json::parse(record_text);
   const Json info = record.value("info", Json::object());
-  const bool valid = info.value("validation", std::string()) == "ok";
+  const std::string verdict = info.value("validation", std::string());
+  const bool valid = verdict == "ok" || verdict == "sizes short of room";
   add(row, "status", !valid ? "invalid" : info.contains("incomplete") ? "incomplete" : "ok");
   add(row, "message", valid ? info.value("incomplete", std::string()) : "");
   flatten(record, "", row);

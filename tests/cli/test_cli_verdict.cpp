@@ -86,5 +86,29 @@ TEST(CliVerdictCrafted, OverlapAllowanceIsTolTimesTheSmallerRadius) {
   EXPECT_EQ(run_frontpack(dir, "validate beyond.csv --scene s.yaml --tolerance 1.3e-9 -q").exit_code, 0);
 }
 
+// Sand with a grain of gravel per thousand, in a box 2.5 gravel diameters wide: once the sand has
+// grown around the middle, gravel finds no room. The placed radii fail their test, and only
+// because of the drafts left out: valid but short of its law, exit 4 (not 3, "a bug"), said on
+// stderr, in the summary and in the record, no file replaced. `validate` judges the file alone.
+TEST(CliVerdictRoom, GravelWithoutRoomIsIncompleteNotABug) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", "dimension: 3\nseed: 42\ncontainer: {type: box, min: [0, 0, 0], max: [0.5, 0.5, 0.5]}\n"
+                                     "particles: {radius: {distribution: discrete, values: [[0.01, 1000], [0.1, 1]]}}\n");
+  write_bytes(dir.work() / "old.csv", "an earlier packing\n");
+  const RunResult r = run_frontpack(dir, "pack s.yaml -o old.csv --record r.json");
+  EXPECT_EQ(r.exit_code, 4) << r.out << r.err;
+  EXPECT_NE(r.err.find("the packing is valid but incomplete: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("drafted radii (the largest 0.1) found no room"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("with them it passes"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("no room for"), std::string::npos) << r.out;
+  EXPECT_EQ(read_bytes(dir.work() / "old.csv"), "an earlier packing\n");
+  const std::string record = read_bytes(dir.work() / "r.json");
+  EXPECT_NE(record.find("\"validation\": \"sizes short of room\""), std::string::npos);
+  EXPECT_NE(record.find("\"radii_never_fit\""), std::string::npos);
+  EXPECT_EQ(run_frontpack(dir, "pack s.yaml -o p.csv -q").exit_code, 4);
+  const RunResult v = run_frontpack(dir, "validate p.csv --scene s.yaml");
+  EXPECT_EQ(v.exit_code, 3) << v.out << v.err;
+}
+
 }  // namespace
 }  // namespace fptest
