@@ -1,12 +1,11 @@
-"""Measures behind three limits of the scene check (README "What is guaranteed"): cluster members,
-and the rare-large-class mixture the front does not fill yet.
+"""Measures behind a limit of the scene check (README "What is guaranteed"): cluster members (the
+rare-large-class mixture moved to rare_large_class.py).
 
   FRONTPACK=build/cli/frontpack /usr/bin/python3 experiments/extremes/limits_shapes.py
 
 Clusters: n members at random in a cube of side 2 (radii 0.2-0.4, random.seed(n)), in a box of 6,
 sizes U[0.5, 1]. 'check' is the whole run with stop.particles 1 (the union's exact volume
-dominates); 'rate' the particles a 10 s time stop leaves, and when the stop ended the pack phase.
-Mixture: radii 0.01 and 0.1 at 1000 : 1 by count in a box of 0.5, radius_pool 4 and 16."""
+dominates); 'rate' the particles a 10 s time stop leaves, and when the stop ended the pack phase."""
 import json
 import os
 import random
@@ -54,15 +53,3 @@ for n in (5, 10, 20, 50, 100, 200):
     else:
         rate = "- | -"
     print(f"| {n} | {check_wall:.2f} | {rate} |")
-
-print()
-print("| radius_pool | placed | large placed | container VF | core VF | radii test | exit |")
-print("|---|---|---|---|---|---|---|")
-mix = ("dimension: 3\ncontainer: {type: box, min: [0,0,0], max: [0.5,0.5,0.5]}\n"
-       "particles: {radius: {distribution: discrete, values: [[0.01, 1000], [0.1, 1]]}}\n")
-for pool in (4, 16):
-    code, wall, rec, radii = run(mix, ["--set", f"packer.radius_pool={pool}"])
-    m = rec["metrics"]
-    test = rec["analysis"]["validation"].get("radii", {})
-    print(f"| {pool} | {rec['n']} | {sum(r > 0.05 for r in radii)} | {m['volume_fraction_container']:.3f} | "
-          f"{m['volume_fraction_core']:.3f} | p = {test.get('p', float('nan')):.2g} | {code} |")
