@@ -45,13 +45,14 @@ double binomial_log_pmf(std::uint64_t k, std::uint64_t n, double p) {
 }
 
 // P(X <= k) (lower) or P(X >= k), summed from k outwards: the terms fall off beyond the mode, so
-// the sum stops when they no longer count (the tail taken is the one away from the mean).
+// the sum stops when they no longer count, or underflow (the tail taken is the one away from the
+// mean: a count far beyond it starts below the smallest double, and so does the rest).
 double binomial_tail(std::uint64_t k, std::uint64_t n, double p, bool lower) {
   double sum = 0.0;
   for (std::uint64_t j = k;; lower ? --j : ++j) {
     const double term = std::exp(binomial_log_pmf(j, n, p));
     sum += term;
-    if (term < sum * 1e-17 || (lower ? j == 0 : j == n)) break;
+    if (term == 0.0 || term < sum * 1e-17 || (lower ? j == 0 : j == n)) break;
   }
   return std::min(1.0, sum);
 }

@@ -79,6 +79,7 @@ TEST(ChiSquareCounts, RareClassesAreCountedExactly) {
   EXPECT_NEAR(binomial_two_sided_p(3, 3, 0.5), 0.25, 1e-15);  // upper tail: P(X = 3) = 1/8
   EXPECT_EQ(binomial_two_sided_p(4, 1000, 0.004), 1.0);       // at the mean: both tails over one half
   EXPECT_LT(binomial_two_sided_p(40, 1000, 0.004), 1e-15);    // ten times the mean
+  EXPECT_EQ(binomial_two_sided_p(5000000, 10000000, 1e-7), 0.0);  // underflows at once: no 5e6 terms
   EXPECT_THROW(binomial_two_sided_p(2, 1, 0.5), std::invalid_argument);
   EXPECT_THROW(binomial_two_sided_p(0, 1, 1.0), std::invalid_argument);
   // A class expected 4 times (pooled for the chi-square) and never seen: before, p = 1 (one
