@@ -345,7 +345,8 @@ PYBIND11_MODULE(frontpack, m) {
       .def_property_readonly("analysis", [](const PyPacking& p) { return json_loads(p.run.record.analysis_json); },
                              "the full analysis of the packing in its scene (as `frontpack analyze --json` gives it)")
       .def_property_readonly("valid", [](const PyPacking& p) { return p.run.valid; },
-                             "the independent validation passed (the command line exits 3 otherwise)")
+                             "the independent validation passed, or failed only its radii test for want of room (drafts "
+                             "that never fitted; the command line exits 4 then, 3 otherwise)")
       .def_property_readonly("validation", [](const PyPacking& p) { return p.run.validation; })
       .def_property_readonly("summary", [](const PyPacking& p) { return p.run.summary; },
                              "the analysis and packer lines of the command line's summary")
