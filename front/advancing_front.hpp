@@ -37,6 +37,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -406,25 +407,25 @@ class AdvancingFront {
     return std::nullopt;
   }
 
-  std::size_t largest_in_pool() const {
-    std::size_t k = 0;
-    for (std::size_t q = 1; q < pool_.size(); ++q)
-      if (radius(pool_[q]) > radius(pool_[k])) k = q;
+  /// The first pooled draft among those `kept` whose radius no other beats by `before` (strictly);
+  /// pool_.size() if none is kept.
+  template <class Kept, class Before>
+  std::size_t first_in_pool(Kept kept, Before before) const {
+    std::size_t k = pool_.size();
+    for (std::size_t q = 0; q < pool_.size(); ++q)
+      if (kept(q) && (k == pool_.size() || before(radius(pool_[q]), radius(pool_[k])))) k = q;
     return k;
+  }
+  std::size_t largest_in_pool() const {
+    return first_in_pool([](std::size_t) { return true; }, std::greater<double>());
   }
   /// The smallest draft of the pool that is not waiting.
   std::size_t smallest_active() const {
-    std::size_t k = pool_.size();
-    for (std::size_t q = 0; q < pool_.size(); ++q)
-      if (!waiting(q) && (k == pool_.size() || radius(pool_[q]) < radius(pool_[k]))) k = q;
-    return k;
+    return first_in_pool([&](std::size_t q) { return !waiting(q); }, std::less<double>());
   }
   /// The largest waiting (or not waiting) draft of the pool; pool_.size() if there is none.
   std::size_t largest_in_pool(bool waiting_ones) const {
-    std::size_t k = pool_.size();
-    for (std::size_t q = 0; q < pool_.size(); ++q)
-      if (waiting(q) == waiting_ones && (k == pool_.size() || radius(pool_[q]) > radius(pool_[k]))) k = q;
-    return k;
+    return first_in_pool([&](std::size_t q) { return waiting(q) == waiting_ones; }, std::greater<double>());
   }
 
   /// The share of the law's volume in drafts kWaitRatio times its smallest radius or more
@@ -453,10 +454,9 @@ class AdvancingFront {
   /// ones, and the clog then cost a scan at every s0 of a large front: experiments/extremes,
   /// "A rare large class").
   void missed(std::size_t k, Result& res) {
-    if (waiting(k)) return;
-    const double ratio = radius(pool_[k]) / radius(pool_[smallest_active()]);
-    if (++misses_[k] < kWaitAfter || ratio < kWaitRatio || waiting_count_ == kMaxWaiting || !may_wait_) {
-      misses_[k] = std::min(misses_[k], kWaitAfter - 1);
+    if (!may_wait_ || waiting(k) || ++misses_[k] < kWaitAfter) return;
+    if (radius(pool_[k]) / radius(pool_[smallest_active()]) < kWaitRatio || waiting_count_ == kMaxWaiting) {
+      misses_[k] = kWaitAfter - 1;
       return;
     }
     misses_[k] = kWaitAfter;  // waiting()
