@@ -32,17 +32,19 @@ double atom_excess(const Atoms& atoms, double r) {
 std::string RadiiFit::describe() const {
   char buf[240];
   if (!computed()) return "not computed";
-  if (test == "constant")
+  if (test == "constant") {
     std::snprintf(buf, sizeof buf, "constant: max |r - value| = %.3g value (%llu radii differ), p = %.3g", statistic,
                   static_cast<unsigned long long>(off_support), p);
-  else if (test == "chi-square" && rare)
-    std::snprintf(buf, sizeof buf, "chi-square X2 = %.4g (%d dof%s) and %zu rare value%s counted exactly (smallest p = %.3g), p = %.3g",
-                  statistic, dof, off_support ? ", radii matching no value" : "", rare, rare == 1 ? "" : "s", rare_p, p);
-  else if (test == "chi-square")
-    std::snprintf(buf, sizeof buf, "chi-square X2 = %.4g (%d dof%s), p = %.3g", statistic, dof,
-                  off_support ? ", radii matching no value" : "", p);
-  else
+  } else if (test == "chi-square") {
+    char rare_text[96] = "";
+    if (rare)
+      std::snprintf(rare_text, sizeof rare_text, " and %zu rare value%s counted exactly (smallest p = %.3g)", rare,
+                    rare == 1 ? "" : "s", rare_p);
+    std::snprintf(buf, sizeof buf, "chi-square X2 = %.4g (%d dof%s)%s, p = %.3g", statistic, dof,
+                  off_support ? ", radii matching no value" : "", rare_text, p);
+  } else {
     std::snprintf(buf, sizeof buf, "K-S D = %.4g, p = %.3g", statistic, p);
+  }
   return buf;
 }
 
