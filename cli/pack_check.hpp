@@ -19,6 +19,9 @@ namespace fp {
 /// for neither does not wait for g(r) or the quasi-Monte Carlo volume fractions).
 enum class CheckDepth { Validation, Analysis };
 
+/// The record's verdict on a valid packing short of its size law for want of room (exit 4).
+inline constexpr const char* kShortOfRoomVerdict = "sizes short of room";
+
 struct PackCheck {
   ValidationReport validation;
   double volume_fraction = 0.0;   ///< of the container (2D: area fraction)
@@ -30,8 +33,8 @@ struct PackCheck {
   std::string analysis_json;      ///< the full analysis (analysis_json.hpp), embedded in the record
   std::string summary_lines;      ///< the analysis' table, then the kind's own lines, each "  name  value\n"
   /// Why a valid packing is not what the scene asks, when it placed nearly nothing of it (a
-  /// stacking that placed less than half its list, a region left empty): exit 4, one code for
-  /// every incomplete packing.
+  /// stacking that placed less than half its list, a region left empty) or is short of its size
+  /// law for want of room (sizes_short_of_room): exit 4, one code for every incomplete packing.
   std::vector<std::string> incomplete;
   /// The only failure is the size test, and the drafts that never found room explain it (the
   /// test of the placed radii with theirs passes): a valid packing short of the law, exit 4.
@@ -39,8 +42,8 @@ struct PackCheck {
 
   /// Valid, or short of its size law only for want of room (exit 4 rather than 3).
   bool valid() const { return validation.ok || sizes_short_of_room; }
-  /// The record's verdict: "ok", "sizes short of room" or "FAILED".
-  const char* verdict() const { return validation.ok ? "ok" : sizes_short_of_room ? "sizes short of room" : "FAILED"; }
+  /// The record's verdict: "ok", kShortOfRoomVerdict or "FAILED".
+  const char* verdict() const { return validation.ok ? "ok" : sizes_short_of_room ? kShortOfRoomVerdict : "FAILED"; }
 
   /// The reasons of `incomplete` in one text ("" when complete): stderr's and the record's.
   std::string incomplete_text() const {

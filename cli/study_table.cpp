@@ -4,6 +4,8 @@
 
 #include <set>
 
+#include "cli/pack_check.hpp"
+
 namespace fp {
 namespace {
 
@@ -49,7 +51,7 @@ StudyRow study_row(const StudySpec& spec, const StudyRun& run, const std::string
   const Json record = Json::parse(record_text);
   const Json info = record.value("info", Json::object());
   const std::string verdict = info.value("validation", std::string());
-  const bool valid = verdict == "ok" || verdict == "sizes short of room";
+  const bool valid = verdict == "ok" || verdict == kShortOfRoomVerdict;
   add(row, "status", !valid ? "invalid" : info.contains("incomplete") ? "incomplete" : "ok");
   add(row, "message", valid ? info.value("incomplete", std::string()) : "");
   flatten(record, "", row);
