@@ -97,30 +97,30 @@ TEST(ChiSquareCounts, RareClassesAreCountedExactly) {
   EXPECT_NEAR(three.p, std::min(1.0, 2 * std::min(chi_square_survival(three.statistic, 1), three.rare_p)), 1e-15);
 }
 
+// How many of `samples` samples of n radii drawn from `law` (values 1, 2, 3, ...) the test
+// rejects at 0.05 against the law itself.
+int rejections_under_the_null(const DiscreteRadius& law, int samples, int n, std::uint64_t seed) {
+  Rng rng(seed);
+  int rejected = 0;
+  for (int t = 0; t < samples; ++t) {
+    std::vector<std::uint64_t> counts(law.probabilities().size(), 0);
+    for (int k = 0; k < n; ++k) ++counts[static_cast<std::size_t>(law.sample(rng)) - 1];
+    rejected += chi_square_counts(counts, law.probabilities()).p < 0.05 ? 1 : 0;
+  }
+  return rejected;
+}
+
 TEST(ChiSquareCounts, RareClassesKeepTheLevelUnderTheNull) {
   // 2000 samples of n = 300 from {0.97, 0.02, 0.01} (the last two expected 6 and 3): the
   // combined test rejects at most about its level.
   const DiscreteRadius law({{1.0, 0.97}, {2.0, 0.02}, {3.0, 0.01}});
-  Rng rng(78);
-  int rejected = 0;
-  for (int t = 0; t < 2000; ++t) {
-    std::vector<std::uint64_t> counts(3, 0);
-    for (int k = 0; k < 300; ++k) ++counts[static_cast<std::size_t>(law.sample(rng)) - 1];
-    rejected += chi_square_counts(counts, {0.97, 0.02, 0.01}).p < 0.05 ? 1 : 0;
-  }
-  EXPECT_LT(rejected, 0.07 * 2000);
+  EXPECT_LT(rejections_under_the_null(law, 2000, 300, 78), 0.07 * 2000);
 }
 
 TEST(ChiSquareCounts, RejectionRateUnderTheNullIsNominalAndASkewIsSeen) {
   // 400 samples of n = 200 from a 3-value law: about 5 % of the p-values fall below 0.05.
   const DiscreteRadius law({{1.0, 0.2}, {2.0, 0.3}, {3.0, 0.5}});
-  Rng rng(77);
-  int rejected = 0;
-  for (int t = 0; t < 400; ++t) {
-    std::vector<std::uint64_t> counts(3, 0);
-    for (int k = 0; k < 200; ++k) ++counts[static_cast<std::size_t>(law.sample(rng)) - 1];
-    rejected += chi_square_counts(counts, law.probabilities()).p < 0.05;
-  }
+  const int rejected = rejections_under_the_null(law, 400, 200, 77);
   EXPECT_GT(rejected, 5);  // Binomial(400, 0.05): mean 20, sd 4.4
   EXPECT_LT(rejected, 38);
   // 0.25 / 0.3 / 0.45 observed at n = 2000 against 0.2 / 0.3 / 0.5: X2 = 35, p ~ 2.5e-8.
