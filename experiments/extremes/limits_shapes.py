@@ -6,31 +6,9 @@ rare-large-class mixture moved to rare_large_class.py).
 Clusters: n members at random in a cube of side 2 (radii 0.2-0.4, random.seed(n)), in a box of 6,
 sizes U[0.5, 1]. 'check' is the whole run with stop.particles 1 (the union's exact volume
 dominates); 'rate' the particles a 10 s time stop leaves, and when the stop ended the pack phase."""
-import json
-import os
 import random
-import subprocess
-import tempfile
-import time
 
-FRONTPACK = os.environ.get("FRONTPACK", "frontpack")
-
-
-def run(scene_text, extra=()):
-    with tempfile.TemporaryDirectory() as d:
-        scene = os.path.join(d, "s.yaml")
-        with open(scene, "w") as f:
-            f.write(scene_text)
-        t0 = time.monotonic()
-        p = subprocess.run([FRONTPACK, "pack", scene, "-o", os.path.join(d, "p.csv"), "--record", os.path.join(d, "r.json"),
-                            "-q", *extra], capture_output=True, text=True)
-        wall = time.monotonic() - t0
-        record = json.load(open(os.path.join(d, "r.json"))) if os.path.exists(os.path.join(d, "r.json")) else None
-        radii = []
-        if os.path.exists(os.path.join(d, "p.csv")):
-            for line in open(os.path.join(d, "p.csv")).readlines()[1:]:
-                radii.append(float(line.split(",")[-1]))
-        return p.returncode, wall, record, radii
+from pack_once import pack as run
 
 
 def cluster(n, stop):

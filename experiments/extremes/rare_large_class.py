@@ -9,13 +9,7 @@ test and the exit code.
 
 Seed 42 for every run, one thread, the default pool of 4. 'large' counts radii above half the
 law's largest; 'expected' is the law's share of them times the particles placed."""
-import json
-import os
-import subprocess
-import tempfile
-import time
-
-FRONTPACK = os.environ.get("FRONTPACK", "frontpack")
+from pack_once import pack
 
 
 def discrete(small, large):
@@ -39,19 +33,8 @@ CASES = [  # name, radius law, box side, largest radius, share of the large clas
 
 
 def run(law, side):
-    text = (f"dimension: 3\nseed: 42\ncontainer: {{type: box, min: [0,0,0], max: [{side},{side},{side}]}}\n"
-            f"particles: {{radius: {law}}}\n")
-    with tempfile.TemporaryDirectory() as d:
-        scene = os.path.join(d, "s.yaml")
-        with open(scene, "w") as f:
-            f.write(text)
-        t0 = time.monotonic()
-        p = subprocess.run([FRONTPACK, "pack", scene, "-o", os.path.join(d, "p.csv"), "--record", os.path.join(d, "r.json"),
-                            "-q"], capture_output=True, text=True)
-        wall = time.monotonic() - t0
-        rec = json.load(open(os.path.join(d, "r.json")))
-        radii = [float(line.split(",")[-1]) for line in open(os.path.join(d, "p.csv")).readlines()[1:]]
-    return p.returncode, wall, rec, radii
+    return pack(f"dimension: 3\nseed: 42\ncontainer: {{type: box, min: [0,0,0], max: [{side},{side},{side}]}}\n"
+                f"particles: {{radius: {law}}}\n")
 
 
 print("| radii | box side | placed | large placed (expected) | waited / never found room | container VF | core VF | "
