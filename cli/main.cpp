@@ -1,7 +1,8 @@
 // The `frontpack` command. Exit codes: 0 success, 1 run-time failure (e.g. an output cannot be
 // written), 2 bad input (scene file, options), 3 the finished packing failed validation, 4 it is
-// valid but placed nearly nothing of what the scene asks, or falls short of its size law only
-// for want of room.
+// valid but incomplete: the scene's stop ended the front before it filled the container, a target
+// was missed, the packer placed nearly nothing of what the scene asks, or the packing falls short
+// of its size law only for want of room.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>

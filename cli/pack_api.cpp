@@ -35,6 +35,7 @@ PackOutcome pack_as(const Scene& scene, const ProgressFn& progress) {
   out.record = pack_record<D, Kind>(scene, res, check, check_seconds);
   out.valid = check.valid();
   out.validation = check.validation.one_line();
+  out.incomplete = check.incomplete_text();
   out.summary = check.summary_lines;
   out.packed.scene = scene;
   out.packed.dimension = D;

@@ -23,6 +23,9 @@ struct PackOutcome {
   RunRecord record;
   bool valid = false;          ///< the independent validation passed (the command exits 3 otherwise)
   std::string validation;      ///< its one line (the summary's `validation` line)
+  /// Why the packing is not the packing of the container the scene asks for (the command exits 4
+  /// when it is valid): the record's `info.incomplete`; "" when complete.
+  std::string incomplete;
   std::string summary;         ///< the summary's analysis and packer lines, as the command prints them
 };
 

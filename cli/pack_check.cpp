@@ -56,6 +56,31 @@ void add_never_fit_lines(PackCheck& c, const std::vector<double>& never_fit, std
   c.incomplete.push_back(line);
 }
 
+void add_cut_short_reason(PackCheck& c, const StopCriteria& criteria, StopReason stop, std::size_t count,
+                          double container_fraction) {
+  char line[480];
+  const char* cluster = "the particles are a cluster around the seed point, not a packing of the container";
+  switch (stop) {
+    case StopReason::FrontExhausted: return;
+    case StopReason::TimeLimit:
+      std::snprintf(line, sizeof line, "the time limit (stop.time: %.6g s) ended the packing before it filled the container, "
+                    "at %zu particles (volume fraction %.4f of the container): %s", criteria.time_limit_seconds.value_or(0.0),
+                    count, container_fraction, cluster);
+      break;
+    case StopReason::ParticleCount:
+      std::snprintf(line, sizeof line, "stop.particles (%zu) ended the packing before it filled the container (volume "
+                    "fraction %.4f of it): %s", static_cast<std::size_t>(criteria.max_particles.value_or(count)),
+                    container_fraction, cluster);
+      break;
+    case StopReason::VolumeFraction:
+      std::snprintf(line, sizeof line, "stop.volume_fraction (%.6g) ended the packing before it filled the container: %s; "
+                    "`target: {solid_fraction: %.6g}` packs the whole container, then thins it to that fraction",
+                    criteria.target_volume_fraction.value_or(0.0), cluster, criteria.target_volume_fraction.value_or(0.0));
+      break;
+  }
+  c.cut_short.push_back(line);
+}
+
 PackCheck pack_check_of(const ValidationReport& validation, double volume_fraction) {
   PackCheck c;
   c.validation = validation;

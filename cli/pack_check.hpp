@@ -11,6 +11,7 @@
 #include "core/metrics/packing_analysis.hpp"
 #include "core/io/scene.hpp"
 #include "core/metrics/validate.hpp"
+#include "front/pack_result.hpp"
 
 namespace fp {
 
@@ -34,8 +35,13 @@ struct PackCheck {
   std::string summary_lines;      ///< the analysis' table, then the kind's own lines, each "  name  value\n"
   /// Why a valid packing is not what the scene asks, when it placed nearly nothing of it (a
   /// stacking that placed less than half its list, a region left empty) or is short of its size
-  /// law for want of room (sizes_short_of_room): exit 4, one code for every incomplete packing.
+  /// law for want of room (sizes_short_of_room), or missed its target solid fraction: exit 4, one
+  /// code for every incomplete packing; no output replaces an existing file.
   std::vector<std::string> incomplete;
+  /// Why the scene's own stop (stop.time, stop.particles, stop.volume_fraction) ended the front
+  /// before it filled the container: the particles are a cluster around the seed point, not a
+  /// packing of the container. Exit 4 as well, but the outputs are written: the scene asked for it.
+  std::vector<std::string> cut_short;
   /// The only failure is the size test, and the drafts that never found room explain it (the
   /// test of the placed radii with theirs passes): a valid packing short of the law, exit 4.
   bool sizes_short_of_room = false;
@@ -45,10 +51,14 @@ struct PackCheck {
   /// The record's verdict: "ok", kShortOfRoomVerdict or "FAILED".
   const char* verdict() const { return validation.ok ? "ok" : sizes_short_of_room ? kShortOfRoomVerdict : "FAILED"; }
 
-  /// The reasons of `incomplete` in one text ("" when complete): stderr's and the record's.
+  /// Exit 4: valid, but not the packing of the container the scene asks for.
+  bool complete() const { return incomplete.empty() && cut_short.empty(); }
+  /// The reasons of `cut_short` and `incomplete` in one text ("" when complete): stderr's, the
+  /// record's and Python's.
   std::string incomplete_text() const {
     std::string why;
-    for (const std::string& w : incomplete) why += (why.empty() ? "" : "; ") + w;
+    for (const auto* reasons : {&cut_short, &incomplete})
+      for (const std::string& w : *reasons) why += (why.empty() ? "" : "; ") + w;
     return why;
   }
 };
@@ -77,6 +87,12 @@ double radii_alpha_of(const Scene& scene);
 /// packing may no longer leave (a container a few of its diameters wide).
 void add_never_fit_lines(PackCheck& c, const std::vector<double>& never_fit, std::vector<double> placed,
                          const RadiusDistribution* law);
+
+/// A front that the scene's stop ended (`stop`: the time limit, stop.particles or
+/// stop.volume_fraction; nothing when it ran empty) left the container unfilled: the reason in
+/// `cut_short`, with `count` particles at `container_fraction` of the container.
+void add_cut_short_reason(PackCheck& c, const StopCriteria& criteria, StopReason stop, std::size_t count,
+                          double container_fraction);
 
 /// The record's figures of an analysis (its validation included) and its table as summary lines.
 PackCheck pack_check_of(const PackingAnalysis& analysis);

@@ -98,7 +98,7 @@ int run(const Scene& scene, const PackCommandOptions& o, Make&& make) {
   std::vector<std::string> spared;
   const double write_seconds = write_outputs(
       scene, o.record_path, rec, [&](OutputFormat format, const std::string& path) { write_packing<D>(format, path, P, rec); },
-      !check.valid() || !incomplete.empty(), &spared);
+      !check.valid() || !check.incomplete.empty(), &spared);  // a stop the scene asked for is written
 
   if (!o.quiet) {
     print_run_header<D>(scene, container);
@@ -108,6 +108,9 @@ int run(const Scene& scene, const PackCommandOptions& o, Make&& make) {
       std::printf("  rank %-9zu %s\n", r, rank_work_text(res.ranks[r]).c_str());
     std::printf("%s", check.summary_lines.c_str());
     std::printf("  validation     %s\n", v.one_line().c_str());
+    if (check.valid())
+      for (const auto* reasons : {&check.cut_short, &check.incomplete})
+        for (const std::string& why : *reasons) std::printf("  INCOMPLETE     %s\n", why.c_str());
     std::printf("  time           pack %.3f s (%.1f particles/s), %s %.3f s, write %.3f s\n", res.seconds, rate,
                 check.timing_name.c_str(), check_seconds, write_seconds);
     print_output_lines(scene, o.record_path, spared);

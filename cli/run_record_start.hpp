@@ -100,7 +100,7 @@ RunRecord pack_record(const Scene& scene, const typename Kind::Result& res, cons
   rec.counters.insert(rec.counters.end(), check.counters.begin(), check.counters.end());
   rec.info = {{"stop_reason", Kind::stop_text(res)}, {"validation", check.verdict()}};
   rec.info.insert(rec.info.end(), check.info.begin(), check.info.end());
-  if (!check.incomplete.empty()) rec.info.emplace_back("incomplete", check.incomplete_text());
+  if (!check.complete()) rec.info.emplace_back("incomplete", check.incomplete_text());
   for (std::size_t r = 0; r < res.ranks.size(); ++r) rec.info.emplace_back("rank_" + std::to_string(r), rank_work_text(res.ranks[r]));
   rec.analysis_json = check.analysis_json;
   return rec;

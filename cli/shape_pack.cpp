@@ -102,6 +102,7 @@ PackCheck ShapePack<D>::check(const Scene& scene, const Result& res, CheckDepth 
                 scene.packer.minimisation.algorithm.c_str(), static_cast<unsigned long long>(s.minimisations),
                 static_cast<unsigned long long>(s.gap_evaluations), static_cast<unsigned long long>(s.fcl_queries));
   c.summary_lines += buf;
+  add_cut_short_reason(c, scene.stop, res.stop, res.packing.size(), res.solid_measure / container.measure());
   add_target_lines(c, scene, res.thinned, res.solid_measure, container.measure(), stop_text(res));
   add_never_fit_lines(c, res.never_fit_radii, {}, nullptr);  // a line only: the size tests are per template
   return c;

@@ -322,6 +322,8 @@ PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth
                                                         options.radii_alpha, nullptr, options.threads),
                                     res.solid_measure / container.measure());
   c.counters.emplace_back("grid_bytes", res.grid_bytes);
+  if (!res.given && !res.tet_filled && !res.stacked)  // the front's own stop (the others fill the whole container)
+    add_cut_short_reason(c, scene.stop, res.stop, res.packing.size(), res.solid_measure / container.measure());
   add_never_fit_lines(c, res.never_fit_radii, res.packing.radii, law.get());
   // A target solid fraction above what the packer reached is said, with why it stopped.
   std::optional<double> phi0 = scene.stop.target_volume_fraction;

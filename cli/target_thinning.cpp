@@ -36,11 +36,14 @@ std::vector<char> particles_to_keep(const Scene& scene, const Container<D>& cont
 }
 
 void add_not_reached_line(PackCheck& c, double phi, double solid_fraction, const std::string& stop) {
-  char line[200];
+  char line[400];
   std::snprintf(line, sizeof line, "  target         volume fraction %.4g not reached: %.4f (stop: %s)\n", phi,
                 solid_fraction, stop.c_str());
   c.summary_lines += line;
   c.info.emplace_back("target_volume_fraction", "not reached");
+  std::snprintf(line, sizeof line, "the target volume fraction %.4g was not reached: %.4f (stop: %s)", phi, solid_fraction,
+                stop.c_str());
+  c.incomplete.push_back(line);
 }
 
 void add_target_lines(PackCheck& c, const Scene& scene, const std::optional<TargetThinning>& thinned, double solid,

@@ -37,7 +37,7 @@ bool above_target(const Scene& scene, double solid) {
 }
 
 /// The line (and the record's info) saying a target solid fraction `phi` was not reached:
-/// `solid_fraction` reached, and why the packer stopped.
+/// `solid_fraction` reached, and why the packer stopped; the packing is incomplete (exit 4).
 void add_not_reached_line(PackCheck& c, double phi, double solid_fraction, const std::string& stop);
 
 /// The summary line, metrics and counters of the thinning, or the line saying the target was not

@@ -155,6 +155,9 @@ Scene scene_from(const py::object& source, const std::vector<SceneOverride>& cha
   return load_scene(path_of(source), changes);
 }
 
+/// frontpack.IncompletePackingWarning (a UserWarning), made when the module is imported.
+PyObject* incomplete_packing_warning = nullptr;
+
 std::shared_ptr<PyPacking> pack(const py::object& source, std::optional<std::uint64_t> seed, std::optional<long long> threads,
                                 py::object progress, const py::object& changes) {
   check_callable(progress, "progress", "(n, seconds, volume_fraction)");
@@ -175,6 +178,10 @@ std::shared_ptr<PyPacking> pack(const py::object& source, std::optional<std::uin
   }
   const PackingInput& p = out->in();
   if (p.shapes) p.dimension == 2 ? unpack_shapes<2>(*out, p.shapes2) : unpack_shapes<3>(*out, p.shapes3);
+  // Where the command exits 4: a warning (an error under `-W error`), the packing still returned.
+  if (!out->run.incomplete.empty() &&
+      PyErr_WarnEx(incomplete_packing_warning, ("the packing is incomplete: " + out->run.incomplete).c_str(), 1) != 0)
+    throw py::error_already_set();
   return out;
 }
 
@@ -292,6 +299,15 @@ PYBIND11_MODULE(frontpack, m) {
   py::register_exception<SceneError>(m, "SceneError", PyExc_ValueError);
   // A file that must not be written (it is read, or written twice; no folder): nothing was.
   py::register_exception<OutputPathError>(m, "OutputPathError", PyExc_ValueError);
+  // A valid packing that is not the packing of the container its scene asks for (the command's
+  // exit 4): frontpack.pack returns it and warns.
+  incomplete_packing_warning = PyErr_NewExceptionWithDoc(
+      "frontpack.IncompletePackingWarning",
+      "frontpack.pack made a valid packing that is not the one its scene asks for: its stop ended the front before it "
+      "filled the container, a target was missed, or the packer placed nearly nothing (Packing.incomplete says why)",
+      PyExc_UserWarning, nullptr);
+  if (!incomplete_packing_warning) throw py::error_already_set();
+  m.add_object("IncompletePackingWarning", py::reinterpret_borrow<py::object>(incomplete_packing_warning));
 
   py::class_<PyPacking, std::shared_ptr<PyPacking>>(m, "Packing", "A packing made by frontpack.pack, with its run record")
       .def_property_readonly("dimension", [](const PyPacking& p) { return p.in().dimension; })
@@ -348,6 +364,11 @@ PYBIND11_MODULE(frontpack, m) {
                              "the independent validation passed, or failed only its radii test for want of room (drafts "
                              "that never fitted; the command line exits 4 then, 3 otherwise)")
       .def_property_readonly("validation", [](const PyPacking& p) { return p.run.validation; })
+      .def_property_readonly("complete", [](const PyPacking& p) { return p.run.incomplete.empty(); },
+                             "False when the packing is not the packing of the container its scene asks for (the "
+                             "command line exits 4 when it is valid); Packing.incomplete says why")
+      .def_property_readonly("incomplete", [](const PyPacking& p) { return p.run.incomplete; },
+                             "why the packing is incomplete (the record's info.incomplete), '' when complete")
       .def_property_readonly("summary", [](const PyPacking& p) { return p.run.summary; },
                              "the analysis and packer lines of the command line's summary")
       .def_property_readonly("scene_path", [](const PyPacking& p) { return p.in().scene->source_path; })
@@ -356,7 +377,8 @@ PYBIND11_MODULE(frontpack, m) {
            "(OutputPathError, a ValueError) a path that is its scene or a file the scene reads")
       .def("__repr__", [](const PyPacking& p) {
         return "<frontpack.Packing: " + std::to_string(p.size()) + (p.in().shapes ? " shapes" : " spheres") + ", " +
-               std::to_string(p.in().dimension) + "D, scene " + p.in().scene->source_path + ">";
+               std::to_string(p.in().dimension) + "D, scene " + p.in().scene->source_path +
+               (p.run.incomplete.empty() ? "" : ", incomplete") + ">";
       });
 
   m.def(

@@ -65,6 +65,11 @@ class TempDir {
   fs::path path_;
 };
 
+/// frontpack's exit code for a valid packing that is not the packing of the container its scene
+/// asks for: a stop (time, particle count, volume fraction) ended the front before it filled the
+/// container, a target was missed, or the packer placed nearly nothing.
+inline constexpr int kIncomplete = 4;
+
 struct RunResult {
   int exit_code = -1;
   std::string out, err;

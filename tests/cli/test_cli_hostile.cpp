@@ -396,7 +396,7 @@ TEST(CliHostileInputs, VtuWithANumberOfPointsThatWrapsRound) {
         write_bytes(w / "one.yaml", kScene + "stop: {particles: 1}\n");
         ASSERT_EQ(std::system(("cd " + quoted(w.string()) + " && " + quoted(frontpack_binary()) +
                                " pack one.yaml -q -o one.vtu").c_str()),
-                  0);
+                  kIncomplete << 8);  // system()'s status: exit 4, the count stop
         std::string vtu = read_bytes(w / "one.vtu");
         const std::string one = "NumberOfPoints=\"1\"";
         ASSERT_NE(vtu.find(one), std::string::npos);

@@ -117,13 +117,24 @@ TEST(CliTarget, ShapesToo) {
   EXPECT_EQ(a.substr(a.find("\"particles\": [")), b.substr(b.find("\"particles\": [")));
 }
 
+// A target above what the packer reaches is missed: the packing is valid but incomplete (exit 4),
+// said in the summary, on stderr and in the record; new files are written, an old one is kept.
 TEST(CliTarget, AboveWhatThePackerReachesIsSaid) {
   TempDir dir;
   write_bytes(dir.work() / "high.yaml", box_scene("target: {solid_fraction: 0.8}\n", 0.0, 0.3));
+  write_bytes(dir.work() / "old.csv", "an earlier packing\n");
   const RunResult r = run_frontpack(dir, "pack high.yaml -o high.csv --record high.json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_EQ(r.exit_code, kIncomplete) << r.err;
   EXPECT_NE(r.out.find("volume fraction 0.8 not reached: 0.5"), std::string::npos) << r.out;
-  EXPECT_NE(read_bytes(dir.work() / "high.json").find("\"target_volume_fraction\": \"not reached\""), std::string::npos);
+  EXPECT_NE(r.out.find("INCOMPLETE     the target volume fraction 0.8 was not reached: 0.5"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("the packing is valid but incomplete: the target volume fraction 0.8 was not reached"),
+            std::string::npos) << r.err;
+  const std::string record = read_bytes(dir.work() / "high.json");
+  EXPECT_NE(record.find("\"target_volume_fraction\": \"not reached\""), std::string::npos);
+  EXPECT_NE(record.find("\"incomplete\": \"the target volume fraction 0.8 was not reached"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir.work() / "high.csv"));
+  EXPECT_EQ(run_frontpack(dir, "pack high.yaml -o old.csv -q").exit_code, kIncomplete);
+  EXPECT_EQ(read_bytes(dir.work() / "old.csv"), "an earlier packing\n");
 }
 
 TEST(CliTarget, BadTargetsAreRefusedAndWriteNothing) {

@@ -138,7 +138,8 @@ TEST_F(CliValidate, ASceneOfShapesIsRefused) {
 // A packing of shapes (the files `pack` writes for a scene of capsules), given to validate and to
 // analyze: refused with exit code 2 and a message that says why (not a layout error), each format.
 // No radius pool: a count stop leaves the pool's drafts unplaced, the smaller ones more often,
-// which skews the size test of 10 particles (this is not what the test is about).
+// which skews the size test of 10 particles (this is not what the test is about). The count stop
+// leaves the packing incomplete (exit 4), and its files written.
 TEST_F(CliValidate, PackingsOfShapesAreRefusedWithTheReason) {
   write_bytes(dir.work() / "caps.yaml",
               "dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [0.2, 0.2, 0.2]}\n"
@@ -147,7 +148,7 @@ TEST_F(CliValidate, PackingsOfShapesAreRefusedWithTheReason) {
   const struct { const char* file; const char* why; } cases[] = {
       {"caps.csv", "'shape_id' column"}, {"caps.json", "'shapes' list"}, {"caps.vtu", "'quaternion' array"}};
   for (const auto& c : cases) {
-    ASSERT_EQ(run_frontpack(dir, std::string("pack caps.yaml -q -o ") + c.file).exit_code, 0) << c.file;
+    ASSERT_EQ(run_frontpack(dir, std::string("pack caps.yaml -q -o ") + c.file).exit_code, kIncomplete) << c.file;
     for (const std::string& command : {std::string("analyze ") + c.file, std::string("validate ") + c.file + " --scene s.yaml"}) {
       const RunResult r = run_frontpack(dir, command);
       EXPECT_EQ(r.exit_code, 2) << command << r.out << r.err;
@@ -168,7 +169,7 @@ TEST_F(CliValidate, PackingsOfShapesFromTheirJsonOutput) {
            "    radii: [0.6, 0.6]\n    size: {distribution: uniform, min: 0.02, max: 0.03}\nstop: {particles: 60}\n";
   };
   write_bytes(dir.work() / "caps.yaml", scene("0", "0.2"));
-  ASSERT_EQ(run_frontpack(dir, "pack caps.yaml -q -o caps.json --record rec.json").exit_code, 0);
+  ASSERT_EQ(run_frontpack(dir, "pack caps.yaml -q -o caps.json --record rec.json").exit_code, kIncomplete);  // the count stop
   const RunResult ok = run_frontpack(dir, "validate caps.json --scene caps.yaml");
   EXPECT_EQ(ok.exit_code, 0) << ok.out << ok.err;
   EXPECT_NE(ok.out.find("particles of shapes"), std::string::npos) << ok.out;
@@ -199,7 +200,7 @@ TEST_F(CliValidate, PackingsOfShapesFromTheirJsonOutput) {
   EXPECT_EQ(bad.out.find("    overlap 0-1: ", worst), bad.out.find('\n', worst) + 1) << bad.out;
 
   write_bytes(dir.work() / "far.yaml", scene("1000000000", "1000000000.2"));
-  ASSERT_EQ(run_frontpack(dir, "pack far.yaml -q -o far.json").exit_code, 0);
+  ASSERT_EQ(run_frontpack(dir, "pack far.yaml -q -o far.json").exit_code, kIncomplete);
   const RunResult far = run_frontpack(dir, "validate far.json --scene far.yaml");
   EXPECT_EQ(far.exit_code, 0) << far.out << far.err;
 
@@ -211,7 +212,7 @@ TEST_F(CliValidate, PackingsOfShapesFromTheirJsonOutput) {
   EXPECT_EQ(ids.exit_code, 2) << ids.out << ids.err;
   EXPECT_NE(ids.err.find("shape_id is 1 but one.yaml has 1 particle templates"), std::string::npos) << ids.err;
 
-  ASSERT_EQ(run_frontpack(dir, "pack caps.yaml -q -o caps.csv").exit_code, 0);
+  ASSERT_EQ(run_frontpack(dir, "pack caps.yaml -q -o caps.csv").exit_code, kIncomplete);
   const RunResult csv = run_frontpack(dir, "validate caps.csv --scene caps.yaml");
   EXPECT_EQ(csv.exit_code, 2) << csv.out << csv.err;
   EXPECT_NE(csv.err.find("give the packing's json output"), std::string::npos) << csv.err;

@@ -6,7 +6,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <tuple>
+#include <vector>
 
 #include "cli_test_util.hpp"
 
@@ -108,6 +110,57 @@ TEST(CliVerdictRoom, GravelWithoutRoomIsIncompleteNotABug) {
   EXPECT_EQ(run_frontpack(dir, "pack s.yaml -o p.csv -q").exit_code, 4);
   const RunResult v = run_frontpack(dir, "validate p.csv --scene s.yaml");
   EXPECT_EQ(v.exit_code, 3) << v.out << v.err;
+}
+
+// The scene's own stops end the front before it fills the container: a cluster around the seed
+// point, valid but incomplete (exit 4), said on stderr, on the summary's INCOMPLETE line and in the
+// record. The outputs are written as asked, over an earlier file too. The same box without a
+// stop is complete (exit 0, no INCOMPLETE line).
+TEST(CliVerdictStops, AStopThatLeavesTheContainerUnfilledIsIncomplete) {
+  TempDir dir;
+  const std::string box = "dimension: 3\nseed: 1\ncontainer: {type: box, min: [0, 0, 0], max: [1, 1, 1]}\n"
+                          "particles: {radius: {distribution: uniform, min: 0.03, max: 0.05}}\n";
+  const struct {
+    const char* stop;
+    const char* why;
+  } cases[] = {
+      {"stop: {particles: 500}", "stop.particles (500) ended the packing before it filled the container (volume fraction 0.1"},
+      {"stop: {volume_fraction: 0.3}", "stop.volume_fraction (0.3) ended the packing before it filled the container"},
+      {"stop: {time: 0.0001}", "the time limit (stop.time: 0.0001 s) ended the packing before it filled the container, at"},
+  };
+  for (const auto& c : cases) {
+    write_bytes(dir.work() / "s.yaml", box + c.stop + "\n");
+    write_bytes(dir.work() / "old.csv", "an earlier packing\n");
+    const RunResult r = run_frontpack(dir, "pack s.yaml -o old.csv --record r.json");
+    EXPECT_EQ(r.exit_code, kIncomplete) << c.stop << r.out << r.err;
+    EXPECT_NE(r.out.find("validation     ok"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(std::string("INCOMPLETE     ") + c.why), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find(std::string("the packing is valid but incomplete: ") + c.why), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("a cluster around the seed point"), std::string::npos) << r.err;
+    const std::string record = read_bytes(dir.work() / "r.json");
+    EXPECT_NE(record.find(std::string("\"incomplete\": \"") + c.why), std::string::npos) << record;
+    EXPECT_NE(record.find("\"validation\": \"ok\""), std::string::npos);
+    const std::vector<std::string> rows = lines_of(read_bytes(dir.work() / "old.csv"));
+    EXPECT_GT(rows.size(), 1u) << c.stop << ": the packing asked for is written over the earlier file";
+    EXPECT_EQ(run_frontpack(dir, "validate old.csv --scene s.yaml -q").exit_code, 0) << c.stop;
+  }
+  write_bytes(dir.work() / "s.yaml", box);
+  const RunResult full = run_frontpack(dir, "pack s.yaml -o full.csv --record r.json");
+  EXPECT_EQ(full.exit_code, 0) << full.out << full.err;
+  EXPECT_EQ(full.out.find("INCOMPLETE"), std::string::npos) << full.out;
+  EXPECT_EQ(read_bytes(dir.work() / "r.json").find("\"incomplete\""), std::string::npos);
+}
+
+// Shapes: the same verdict from the general front.
+TEST(CliVerdictStops, ShapesCutShortByACountAreIncomplete) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", "dimension: 2\nseed: 2\ncontainer: {type: rectangle, min: [0, 0], max: [4, 4]}\n"
+                                     "particles:\n  - shape: spherocylinder\n    aspect_ratio: 0.5\n"
+                                     "    size: {distribution: constant, value: 0.2}\nstop: {particles: 12}\n");
+  const RunResult r = run_frontpack(dir, "pack s.yaml -o s.csv");
+  EXPECT_EQ(r.exit_code, kIncomplete) << r.out << r.err;
+  EXPECT_NE(r.err.find("stop.particles (12) ended the packing before it filled the container"), std::string::npos) << r.err;
+  EXPECT_EQ(lines_of(read_bytes(dir.work() / "s.csv")).size(), 13u);
 }
 
 }  // namespace

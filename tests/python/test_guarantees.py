@@ -7,11 +7,14 @@ a clear exception that loses nothing, never a crash.
 * A packing is validated and analysed against any scene it can be in, anywhere in space; a scene
   it cannot be in (another dimension, shapes for spheres) is a ValueError, not a crash.
 * Scene dicts may hold numpy values; threads=, jobs= and progress= are checked.
+* A packing the command line calls incomplete (exit 4) says so: Packing.complete, .incomplete,
+  and an IncompletePackingWarning from frontpack.pack.
 """
 import json
 import os
 import subprocess
 import sys
+import warnings
 
 import numpy as np
 import pytest
@@ -248,3 +251,21 @@ def test_threads_jobs_and_progress_are_checked(packings, tmp_path):
         with pytest.raises(ValueError, match=rf"jobs must be an integer from 0 \(the study's\) to 1024 \(got {bad}\)"):
             frontpack.study(study, plots=False, jobs=bad)
     assert sorted(f.name for f in tmp_path.iterdir()) == ["base.yaml"]
+
+
+def test_an_incomplete_packing_warns_and_says_why():
+    cut = dict(BOX, stop={"particles": 20})
+    with pytest.warns(frontpack.IncompletePackingWarning, match=r"stop\.particles \(20\) ended the packing"):
+        p = frontpack.pack(cut)
+    assert len(p) == 20 and p.valid and not p.complete
+    assert p.incomplete.startswith("stop.particles (20) ended the packing before it filled the container")
+    assert p.record["info"]["incomplete"] == p.incomplete
+    assert repr(p).endswith(", incomplete>")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # a complete packing warns of nothing
+        full = frontpack.pack(BOX)
+    assert full.complete and full.incomplete == "" and "incomplete" not in full.record["info"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", frontpack.IncompletePackingWarning)
+        with pytest.raises(frontpack.IncompletePackingWarning):
+            frontpack.pack(cut)
