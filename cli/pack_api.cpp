@@ -70,7 +70,7 @@ PackingAnalysis analyze_as(const PackingInput& in, const ShapePacking<D>& P, dou
 template <int D>
 ValidationReport validate_as(const Scene& scene, const Packing<D>& P, double tolerance, double alpha, int threads) {
   const double tol = tolerance >= 0 ? tolerance : overlap_tolerance(scene);
-  return validate_packing<D>(P, *scene.container<D>(), radii_to_check(scene).get(), tol,
+  return validate_packing<D>(P, *scene.container<D>(), radii_to_check(scene, P.radii).get(), tol,
                              alpha >= 0 ? alpha : radii_alpha_of(scene), nullptr, thread_count(threads));
 }
 

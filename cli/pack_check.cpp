@@ -7,6 +7,8 @@
 
 #include "core/io/analysis_json.hpp"
 #include "core/metrics/radii_fit.hpp"
+#include "core/metrics/radius_scale_fit.hpp"
+#include "core/sampling/scaled_radius.hpp"
 #include "core/sampling/uniform_radius.hpp"
 
 namespace fp {
@@ -25,8 +27,12 @@ double radii_alpha_of(const Scene& scene) {
   return fitted ? 0.0 : kRadiiAlpha;
 }
 
-RadiusDistributionPtr radii_to_check(const Scene& scene) {
+RadiusDistributionPtr radii_to_check(const Scene& scene, std::span<const double> radii) {
   RadiusDistributionPtr law = scene.radii;
+  if (law && scene.stop.scale_sizes) {
+    const double s = fit_radius_scale(radii, *law);  // not a number from radii that are not (the test then fails)
+    return s > 0 && std::isfinite(s) ? std::make_shared<const ScaledRadius>(law, s) : law;
+  }
   if (!law || scene.regions.empty()) return law;
   double lo = law->r_min(), hi = law->r_max();
   for (const RegionSpec& r : scene.regions)

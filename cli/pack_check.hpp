@@ -4,6 +4,7 @@
 // contact/shape_analysis.hpp), the one verdict in it (core/metrics/validate.hpp), and what a kind
 // of particle adds (cli/sphere_pack.hpp: the grid's memory; cli/shape_pack.hpp: the solvers').
 #include <cstdint>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -66,7 +67,9 @@ struct PackCheck {
 /// The law a packing of spheres of `scene` is checked against (`pack` and `validate` alike): the
 /// scene's, or with regions of laws of their own the uniform law over all their ranges (only the
 /// range is then tested: their radii come from the voids).
-RadiusDistributionPtr radii_to_check(const Scene& scene);
+/// With stop.scale_sizes, the scene's law scaled by the factor fitted from `radii`
+/// (core/metrics/radius_scale_fit.hpp): the size test asks for the law's shape.
+RadiusDistributionPtr radii_to_check(const Scene& scene, std::span<const double> radii);
 
 /// The overlap a packing of `scene` may have, relative to the smaller radius of a pair (`pack` and
 /// `validate` alike): the contact tolerance, plus the epsilon the tetrahedral-mesh packer or the

@@ -63,7 +63,8 @@ inline std::string rank_work_text(const RankWork& w) {
 /// What the record and the summaries call the particles: the radius law, or each template's
 /// family and size law.
 inline std::string particles_description(const Scene& scene) {
-  if (scene.particle_templates.empty()) return scene.radii->describe();
+  if (scene.particle_templates.empty())
+    return scene.radii->describe() + (scene.stop.scale_sizes ? ", scaled so that stop.particles fill the container" : "");
   std::string d;
   for (const ParticleTemplateSpec& t : scene.particle_templates) d += (d.empty() ? "" : "; ") + t.family + " " + t.size->describe();
   return d;

@@ -12,6 +12,7 @@
 #include "core/metrics/contacts.hpp"
 #include "core/metrics/packing_analysis.hpp"
 #include "core/metrics/validate.hpp"
+#include "core/sampling/scaled_radius.hpp"
 #include "core/sampling/split_radius.hpp"
 #include "core/system/parallel_parts.hpp"
 #include "front/block_exchange.hpp"
@@ -249,6 +250,15 @@ void add_least_squares_lines(const LeastSquaresReport& q, double measure, LeastS
 
 template <int D>
 typename SpherePack<D>::Result SpherePack<D>::pack(const Scene& scene, const ProgressFn& progress, BlockExchange* exchange) {
+  if (scene.stop.scale_sizes) {  // N spheres that fill the container: the law's scale is solved for first
+    if (exchange && exchange->processes() > 1)
+      throw std::runtime_error("stop.scale_sizes packs on one process: run this scene without mpirun, with threads (-j N)");
+    const SizeScaling scaling = solve_size_scale<D>(scene, progress);
+    Result run = pack(with_radii_scaled(scene, scaling.scale), progress, nullptr);
+    run.sizes_scaled = scaling;
+    run.seconds += scaling.seconds;
+    return run;
+  }
   Result run;
   if constexpr (D == 3) {
     if (scene.packer.method == "tet_mesh") {
@@ -315,14 +325,19 @@ PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth
   // Radii the voids gave (paper 000) are asked to lie in the range only; their law is reported.
   const bool fitted = radii_alpha_of(scene) == 0.0;
   options.radii_alpha = radii_alpha_of(scene);
-  const RadiusDistributionPtr law = radii_to_check(scene);
+  const RadiusDistributionPtr law = radii_to_check(scene, res.packing.radii);
   PackCheck c = depth == CheckDepth::Analysis
                     ? pack_check_of(analyze_packing<D>(res.packing, &container, law.get(), options))
                     : pack_check_of(validate_packing<D>(res.packing, container, law.get(), res.contact_tolerance,
                                                         options.radii_alpha, nullptr, options.threads),
                                     res.solid_measure / container.measure());
   c.counters.emplace_back("grid_bytes", res.grid_bytes);
-  if (!res.given && !res.tet_filled && !res.stacked)  // the front's own stop (the others fill the whole container)
+  if (res.sizes_scaled) {
+    const auto* fitted = dynamic_cast<const ScaledRadius*>(law.get());
+    add_size_scaling_lines(c, *res.sizes_scaled, res.packing.size(), res.solid_measure / container.measure(),
+                           fitted ? fitted->scale() : std::nan(""));
+  }
+  else if (!res.given && !res.tet_filled && !res.stacked)  // the front's own stop (the others fill the whole container)
     add_cut_short_reason(c, scene.stop, res.stop, res.packing.size(), res.solid_measure / container.measure());
   add_never_fit_lines(c, res.never_fit_radii, res.packing.radii, law.get());
   // A target solid fraction above what the packer reached is said, with why it stopped.

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cli/pack_check.hpp"
+#include "cli/scaled_sizes.hpp"
 #include "cli/target_thinning.hpp"
 #include "core/io/scene.hpp"
 #include "densify/least_squares.hpp"
@@ -31,6 +32,7 @@ struct SphereRun : PackResult<D> {
   std::optional<VoidFillingReport> densified;    ///< the void filling, when the scene asks for it
   std::optional<LeastSquaresReport> squared;     ///< the least-squares densification (`least_squares:`)
   std::optional<TargetThinning> thinned;         ///< brought down to the scene's `target:`
+  std::optional<SizeScaling> sizes_scaled;       ///< `stop.scale_sizes`: the radius law's scale solved for
 };
 
 template <int D>

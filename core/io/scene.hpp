@@ -147,6 +147,9 @@ struct StopCriteria {
   std::optional<std::uint64_t> max_particles;     ///< stop after N particles
   std::optional<double> target_volume_fraction;   ///< stop when sum of particle volumes / container volume >= phi0
   std::optional<double> time_limit_seconds;       ///< stop after this wall time
+  /// With max_particles: the size law is scaled (its shape kept) so that N particles fill the
+  /// container, the scale solved for by trial packings (cli/scaled_sizes.hpp).
+  bool scale_sizes = false;
   // The front running empty always stops the run.
 };
 

@@ -52,7 +52,10 @@ RunDemand estimate_run_demand(const Scene& scene, double mean_particle_measure) 
     const double n = *scene.stop.target_volume_fraction * d.container_measure / mean_particle_measure;
     if (n < d.particles) d.particles = n, d.bound_by = "stop.volume_fraction";
   }
-  if (scene.stop.max_particles && static_cast<double>(*scene.stop.max_particles) < d.particles)
+  // stop.scale_sizes: the sizes are scaled to the count, and its trial packings place up to twice it.
+  if (scene.stop.max_particles && scene.stop.scale_sizes)
+    d.particles = 2.0 * static_cast<double>(*scene.stop.max_particles), d.bound_by = "stop.particles";
+  else if (scene.stop.max_particles && static_cast<double>(*scene.stop.max_particles) < d.particles)
     d.particles = static_cast<double>(*scene.stop.max_particles), d.bound_by = "stop.particles";
   const bool shapes = !scene.particle_templates.empty();
   d.bytes_per_particle = shapes ? (D == 3 ? kBytesPerShape3 : kBytesPerShape2) : (D == 3 ? kBytesPerSphere : kBytesPerDisk);

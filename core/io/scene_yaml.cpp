@@ -544,7 +544,7 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
 
 void parse_stop(const Value& v, StopCriteria& s, std::map<std::string, SourceSpot>& spots) {
   const Map m = v.map();
-  m.check_known({"particles", "volume_fraction", "time"});
+  m.check_known({"particles", "volume_fraction", "time", "scale_sizes"});
   spots["stop"] = v.spot();
   if (auto x = m.find("particles")) {
     s.max_particles = particle_count(*x);
@@ -555,6 +555,23 @@ void parse_stop(const Value& v, StopCriteria& s, std::map<std::string, SourceSpo
     spots["stop.volume_fraction"] = x->spot();
   }
   if (auto x = m.find("time")) s.time_limit_seconds = x->positive();
+  if (auto x = m.find("scale_sizes")) s.scale_sizes = x->boolean();
+}
+
+/// `stop.scale_sizes` solves for the scale of the size law at which the front's stop.particles
+/// fill the container: it needs that count, and nothing that changes the count or cuts the trial
+/// packings short.
+void check_scale_sizes(const Map& root, const Scene& scene) {
+  const Value v = *root.find("stop")->map().find("scale_sizes");
+  std::string why;
+  if (!scene.stop.max_particles) why = "give the count: 'stop: {particles: N, scale_sizes: true}'";
+  else if (scene.stop.time_limit_seconds) why = "a time stop would cut its trial packings short: drop 'stop.time'";
+  else if (scene.stop.target_volume_fraction) why = "the N particles fill the container: drop 'stop.volume_fraction'";
+  else if (scene.target_solid_fraction) why = "the thinning to 'target' would change the count: give one of the two";
+  else if (scene.densify) why = "the void filling ('densify') would add particles to the N: drop one of the two";
+  else if (scene.packer.method != "front") why = "it scales the front's sizes: 'packer.method' must be front";
+  else if (!scene.particle_templates.empty()) why = "it scales the radii of spheres (disks) only; a scene of shapes is not scaled";
+  if (!why.empty()) v.fail("scale_sizes solves for the scale of the size law at which stop.particles fill the container; " + why);
 }
 
 /// `target: {solid_fraction: PHI | porosity: N | void_ratio: E}`: exactly one, as a solid fraction.
@@ -1032,6 +1049,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name, const
       scene.target_solid_fraction = parse_target(*t);
       scene.spots["target"] = t->spot();
     }
+    if (scene.stop.scale_sizes) check_scale_sizes(root, scene);
     if (scene.packer.method == "stacking" && !scene.target_solid_fraction && !scene.stop.max_particles)
       root.find("packer")->map().find("method")->fail(
           "the graded stacking (paper 003) places a list of particles made from the gradation and a target: give "

@@ -376,6 +376,29 @@ TEST(SceneYamlErrors, NonPositiveSizes) {
   expect_error(kBox3 + "stop:\n  particles: 0\n", 6, "stop.particles", {"positive integer"});
 }
 
+// stop.scale_sizes solves for the scale at which the front's N particles fill the container:
+// without N, or with what cuts its trial packings short or changes the count, it is refused at its key.
+TEST(SceneYamlErrors, ScaleSizesNeedsACountAndNothingThatChangesIt) {
+  const Scene ok = parse_scene(kBox3 + "stop: {particles: 300, scale_sizes: true}\n", kFile);
+  EXPECT_TRUE(ok.stop.scale_sizes);
+  EXPECT_FALSE(parse_scene(kBox3 + "stop: {particles: 300, scale_sizes: false}\n", kFile).stop.scale_sizes);
+  const std::pair<std::string, const char*> cases[] = {
+      {"stop: {scale_sizes: true}\n", "give the count"},
+      {"stop: {particles: 300, scale_sizes: true, time: 5}\n", "drop 'stop.time'"},
+      {"stop: {particles: 300, scale_sizes: true, volume_fraction: 0.3}\n", "drop 'stop.volume_fraction'"},
+      {"stop: {particles: 300, scale_sizes: true}\ntarget: {solid_fraction: 0.4}\n", "'target' would change the count"},
+      {"stop: {particles: 300, scale_sizes: true}\ndensify: {}\n", "the void filling"},
+      {"stop: {particles: 300, scale_sizes: true}\npacker: {method: stacking}\n", "'packer.method' must be front"},
+      {"stop: {particles: 300, scale_sizes: yes please}\n", ""},
+  };
+  for (const auto& [stop, why] : cases)
+    expect_error(kBox3 + stop, 5, "stop.scale_sizes", {*why ? "fill the container; " : "", why});
+  expect_error("dimension: 3\ncontainer: {type: box, min: [0, 0, 0], max: [1, 1, 1]}\nparticles:\n"
+               "  - {shape: ellipsoid, axes: [1, 0.8, 0.6], size: {distribution: constant, value: 0.05}}\n"
+               "stop: {particles: 30, scale_sizes: true}\n",
+               5, "stop.scale_sizes", {"spheres (disks) only"});
+}
+
 TEST(SceneYamlErrors, OutOfRangeOptions) {
   expect_error(kBox3 + "stop: {volume_fraction: 1.2}\n", 5, "stop.volume_fraction", {"(0, 1)"});
   expect_error(kBox3 + "packer:\n  contact_tolerance: 0.01\n", 6, "packer.contact_tolerance", {"(0, 1e-3)"});

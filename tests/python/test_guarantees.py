@@ -269,3 +269,17 @@ def test_an_incomplete_packing_warns_and_says_why():
         warnings.simplefilter("error", frontpack.IncompletePackingWarning)
         with pytest.raises(frontpack.IncompletePackingWarning):
             frontpack.pack(cut)
+
+
+def test_scaled_sizes_give_n_particles_that_fill_the_container():
+    scene = dict(BOX, stop={"particles": 400, "scale_sizes": True})
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # complete: no warning
+        p = frontpack.pack(scene)
+    assert len(p) == 400 and p.valid and p.complete
+    m = p.record["metrics"]
+    assert abs(m["size_scale_fitted"] / m["size_scale"] - 1) < 0.02
+    assert 400 <= p.record["counters"]["size_scale_full_count"] <= 404
+    ratio = p.radii.max() / p.radii.min()
+    assert ratio <= 2 * (1 + 1e-12)  # the law's shape: U[0.01, 0.02] scaled
+    assert frontpack.validate(p)["ok"]
