@@ -66,7 +66,9 @@ def main():
             with open(sc, "w") as f:
                 f.write(text)
             csv = os.path.join(tmp, f"p{n}.csv")
-            run(["flock", LOCK, fp, "pack", sc, "-q", "-o", csv])
+            p = subprocess.run(["flock", LOCK, fp, "pack", sc, "-q", "-o", csv], cwd=ROOT)
+            if p.returncode not in (0, 4):  # 4: valid, but the scene's stop left the container unfilled, as asked
+                raise SystemExit(f"{sc}: frontpack failed (exit {p.returncode})")
             times = {c[0]: [] for c in configs}
             mems = {c[0]: [] for c in configs}
             vtimes = {c[0]: [] for c in configs}

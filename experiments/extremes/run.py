@@ -297,7 +297,7 @@ def write_results(argv, binary):
     lines += ["",
               "Every case packed with `frontpack pack SCENE -q -o out.csv --record r.json` under a timeout, then",
               "`frontpack validate out.csv --scene SCENE` (the file read back in the container's frame). `exit` is",
-              "the pack's exit code (0 ok, 2 refused, 3 failed its own validation), `val` the validate exit code.",
+              "the pack's exit code (0 ok, 2 refused, 3 failed its own validation, 4 valid but incomplete), `val` the validate exit code.",
               "`N / ref` and `ΔVF` compare with the reference case: the same scene at the origin and scale 1.",
               "Scene texts: `cases()` in run.py; the ctest suites tests/front/test_front_far_and_scaled.cpp,",
               "test_front_thin.cpp and test_front_extremes.cpp assert them (the bad-input cases are in",

@@ -130,7 +130,7 @@ def run(name, text, **info):
             wall = time.monotonic() - t0
             after = resource.getrusage(resource.RUSAGE_CHILDREN)
         cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-        if p.returncode not in (0, 3) or not record.exists():
+        if p.returncode not in (0, 3, 4) or not record.exists():  # 3: a failed verdict, 4: a stop left the box unfilled
             raise SystemExit(f"{name}: frontpack failed ({p.returncode}): {p.stderr[-800:]}")
         r = json.loads(record.read_text())
         texture = radial_texture(Path(tmp) / "out.json", r["dimension"]) if Path(tmp, "out.json").exists() else None
