@@ -151,6 +151,10 @@ int run_pack_command(const PackCommandOptions& o) {
         throw InputError("'" + o.input_path + "' is not a valid packing of the scene '" + o.scene_path +
                          "', so it is not densified (frontpack validate gives this verdict):\n" + v.summary());
       scene = std::move(*given.scene);
+      if (scene.stop.scale_sizes)  // the voids would take the law's own sizes, not the scale the packing was made at
+        throw InputError("the scene '" + o.scene_path + "' scales its size law to fill the container with stop.particles "
+                         "(stop.scale_sizes); frontpack densify fills voids with the law's own sizes: give it a scene with "
+                         "the scaled law written out");
     } else {
       scene = load_scene(o.scene_path, o.scene_overrides);
     }

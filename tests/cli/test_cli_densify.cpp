@@ -125,6 +125,8 @@ TEST_F(CliDensify, BadInputExitsTwoAndWritesNothing) {
   nothing_new(run_frontpack(dir, "pack split.yaml -o out.csv"), "split beyond the law", "densify");
   write_bytes(dir.work() / "splitfit.yaml", std::string(kScene) + "densify: {radii: fit, split: 0.02}\n");
   nothing_new(run_frontpack(dir, "pack splitfit.yaml -o out.csv"), "split with fit", "needs 'radii: distribution'");
+  write_bytes(dir.work() / "scaled.yaml", std::string(kScene) + "stop: {particles: 50, scale_sizes: true}\n");
+  nothing_new(run_frontpack(dir, "densify p.csv --scene scaled.yaml -o out.csv"), "scaled law", "stop.scale_sizes");
   write_bytes(dir.work() / "eps.yaml", std::string(kScene) + "densify: {overlap: -0.1}\n");
   nothing_new(run_frontpack(dir, "densify p.csv --scene eps.yaml -o out.csv"), "overlap", "densify.overlap");
   write_bytes(dir.work() / "shapes.yaml",
