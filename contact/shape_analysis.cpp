@@ -78,7 +78,7 @@ PackingAnalysis analyze_shape_packing(const ShapePacking<D>& packing, const Cont
   });
 
   timed_step(t, "homogeneity", [&] {
-    a.homogeneity = centre_homogeneity(balls, container.bounds(), bounding_max);
+    a.homogeneity = centre_homogeneity(balls, container, 2 * bounding_max);  // the core of VF core
     for (std::size_t k = 0; k < requested.size() && k < families.size(); ++k)
       if (requested[k].size) a.distribution += (a.distribution.empty() ? "" : "; ") + families[k] + " " + requested[k].size->describe();
     a.radii_fit = a.validation->radii();  // the one template's sizes (none for several: see the validation)

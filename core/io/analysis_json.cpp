@@ -150,7 +150,7 @@ std::string analysis_json(const PackingAnalysis& a, bool include_timings) {
     axes.push_back(ks_fields(Json{{"axis", kAxes[k]}, {"lo", a.homogeneity.lo[k]}, {"hi", a.homogeneity.hi[k]}}, ks));
     axes.back()["below_critical"] = ks.below_critical();
   }
-  j["homogeneity"] = Json{{"margin", a.homogeneity.margin}, {"axes", axes}};
+  j["homogeneity"] = Json{{"margin", a.homogeneity.margin}, {"reference_points", a.homogeneity.reference_points}, {"axes", axes}};
   j["radii_fit"] = radii_fit_fields(Json{{"distribution", a.distribution}}, a.radii_fit);
 
   Json proj = Json::array();

@@ -96,8 +96,8 @@ std::string PackingAnalysis::summary() const {
   const char* axes = "xyz";
   for (std::size_t a = 0; a < homogeneity.axis.size(); ++a) {
     const KsResult& k = homogeneity.axis[a];
-    line("K-S centres %c        sqrt(n) D = %.4f (%s 1.358), p = %.3g", axes[a], k.sqrt_n_d,
-         k.below_critical() ? "<" : ">=", k.p);
+    line("K-S centres %c        sqrt(n) D = %.4f (%s 1.358), p = %.3g; the %llu centres 2 r_max inside", axes[a], k.sqrt_n_d,
+         k.below_critical() ? "<" : ">=", k.p, static_cast<unsigned long long>(k.n));
   }
   for (std::size_t a = 0; a < projections.ks.size(); ++a)
     line("K-S projections %c    D = %.4f, p = %.3g vs %s", axes[a], projections.ks[a].d, projections.ks[a].p,
@@ -182,7 +182,7 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
     a.projections = relative_projections(packing, contacts, options.projection_bins);
   });
   steps.emplace_back("homogeneity", [&] {
-    a.homogeneity = centre_homogeneity(packing, container->bounds(), a.r_max);
+    a.homogeneity = centre_homogeneity(packing, *container, 2 * a.r_max);  // the core of VF core
     if (dist_or_null != nullptr) {
       a.distribution = dist_or_null->describe();
       if (a.validation) {

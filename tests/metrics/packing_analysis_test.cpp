@@ -56,8 +56,13 @@ TEST(PackingAnalysis, SimpleCubicInATightBox) {
   for (const double e : a.fabric.per_particle.eigenvalues) EXPECT_NEAR(e, 1.0 / 3.0, 1e-12);
   for (const KsResult& k : a.projections.ks) EXPECT_NEAR(k.d, 2.0 / 3.0, 1e-15);
 
-  // Homogeneity: centres 0 .. n-1 against uniform on [0, n - 1] (margin r_max): D = 1/n.
-  for (const KsResult& k : a.homogeneity.axis) EXPECT_NEAR(k.d, 1.0 / n, 1e-15);
+  // Homogeneity: the centres 1 .. n-2 of the core (the box less 2 r_max = 1) against uniform on
+  // [0.5, n - 1.5]: F_n reaches k / (n - 2) at site k where F is (k - 1/2) / (n - 2), D = 1/(2(n - 2)).
+  for (const KsResult& k : a.homogeneity.axis) {
+    EXPECT_EQ(k.n, std::uint64_t((n - 2) * (n - 2) * (n - 2)));
+    EXPECT_NEAR(k.d, 0.5 / (n - 2), 1e-15);
+  }
+  EXPECT_EQ(a.homogeneity.reference_points, 0u);  // a box: exact
   EXPECT_FALSE(a.radii_fit.computed());
   EXPECT_EQ(a.distribution, "");
 
