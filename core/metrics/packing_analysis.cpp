@@ -60,7 +60,10 @@ std::string PackingAnalysis::summary() const {
   line("VF reference ball    %.6f (r_ref = a = %.6g; %zu radii from r_max%s)", vf_reference, reference_radius,
        vf_curve.size(), radius_name == "r" ? "" : "; QMC for the particles it cuts");
   line("VF container         %s", estimate(vf_container).c_str());
-  line("VF core              %s, 2 r_max = %.6g inside", estimate(vf_core).c_str(), vf_core.shrink);
+  if (std::isfinite(vf_core.vf.value))
+    line("VF core              %s, 2 r_max = %.6g inside", estimate(vf_core).c_str(), vf_core.shrink);
+  else
+    line("VF core              none: the container has no core 2 r_max = %.6g inside", vf_core.shrink);
   if (wall_profile.computed()) {
     std::string shells;
     for (const Estimate& e : wall_profile.vf) {
@@ -70,7 +73,10 @@ std::string PackingAnalysis::summary() const {
     line("VF wall layers       %.4f within 2 r_max; shells of %.4g from the wall: %s", wall_profile.layer.value,
          wall_profile.width, shells.c_str());
   }
-  if (vf_cells.computed())
+  if (vf_cells.computed() && vf_cells.cells < 2)
+    line("VF cells             %.4f in the one cell of %g <d> (edge %.6g) that fits 2 r_max inside: no spread from one cell",
+         vf_cells.mean, vf_cells.diameters, vf_cells.edge);
+  else if (vf_cells.computed())
     line("VF cells             mean %.4f, sd %.4f, range [%.4f, %.4f] over %llu cells of %g <d> (edge %.6g), 2 r_max inside",
          vf_cells.mean, vf_cells.std_dev, vf_cells.min, vf_cells.max, static_cast<unsigned long long>(vf_cells.cells),
          vf_cells.diameters, vf_cells.edge);
@@ -96,6 +102,10 @@ std::string PackingAnalysis::summary() const {
   const char* axes = "xyz";
   for (std::size_t a = 0; a < homogeneity.axis.size(); ++a) {
     const KsResult& k = homogeneity.axis[a];
+    if (k.n == 0) {
+      line("K-S centres %c        none: no centre lies %.6g (2 r_max) inside the container", axes[a], homogeneity.margin);
+      continue;
+    }
     line("K-S centres %c        sqrt(n) D = %.4f (%s 1.358), p = %.3g; the %llu centres 2 r_max inside", axes[a], k.sqrt_n_d,
          k.below_critical() ? "<" : ">=", k.p, static_cast<unsigned long long>(k.n));
   }
@@ -106,7 +116,10 @@ std::string PackingAnalysis::summary() const {
     line("radii test           %s vs %s", radii_fit.describe().c_str(), distribution.c_str());
   else if (!distribution.empty())
     line("size tests           per template, in the validation below (%s)", distribution.c_str());
-  if (!rdf.g.empty()) {
+  if (!rdf.g.empty() && rdf.reference_particles == 0) {
+    line("g(r)                 none: no centre lies %.6g (r_cut %g <d> + r_max) inside the container, so no shell of "
+         "r_cut around one is free of the walls", rdf.reference_margin, rdf.range);
+  } else if (!rdf.g.empty()) {
     const auto peak = std::max_element(rdf.g.begin(), rdf.g.end()) - rdf.g.begin();
     line("g(r)                 max %.3f at r = %.3f <d>, %llu reference particles", rdf.g[peak], rdf.r[peak],
          static_cast<unsigned long long>(rdf.reference_particles));

@@ -131,6 +131,18 @@ TEST(PackingAnalysis, RadiiAgainstTheRequestedDistribution) {
   EXPECT_FALSE(analyze_packing<3>(p, &box, &dist, quiet).validation.has_value());
 }
 
+// A box two particles wide has no core: the figures that need one say why instead of zeros.
+TEST(PackingAnalysis, FiguresWithoutRoomSayWhy) {
+  const auto lat = test::simple_cubic(2, 1.0, Vec3::Zero());
+  const BoxContainer<3> box(Vec3::Constant(-0.5), Vec3::Constant(1.5));
+  const std::string s = analyze_packing<3>(lat.packing, &box, nullptr).summary();
+  EXPECT_NE(s.find("K-S centres x        none: no centre lies 1 (2 r_max) inside the container"), std::string::npos) << s;
+  EXPECT_NE(s.find("g(r)                 none: no centre lies"), std::string::npos) << s;
+  EXPECT_NE(s.find("VF cells             none:"), std::string::npos) << s;
+  EXPECT_EQ(s.find("nan"), std::string::npos) << s;
+  EXPECT_EQ(s.find("0 reference particles"), std::string::npos) << s;
+}
+
 TEST(PackingAnalysis, EmptyPacking) {
   const PackingAnalysis none = analyze_packing<3>(Packing<3>{}, nullptr, nullptr);
   EXPECT_EQ(none.particles, 0u);
