@@ -22,6 +22,7 @@
 #include "core/io/output_paths.hpp"
 #include "core/io/temp_file_registry.hpp"
 #include "core/metrics/packing_analysis.hpp"
+#include "core/metrics/packing_sections.hpp"
 
 #ifndef FRONTPACK_PLOT_SCRIPT
 #error "FRONTPACK_PLOT_SCRIPT must name python/plot_analysis.py"
@@ -51,9 +52,34 @@ std::string radius_cdf_csv(std::vector<double> radii, const RadiusDistribution* 
   return os.str();
 }
 
-/// The figures python/plot_analysis.py draws (keep in step with the script).
+/// The figures python/plot_analysis.py draws for every packing (keep in step with the script).
 const char* const kPlotFiles[] = {"vf_curve.png", "coordination.png", "radii.png",
                                   "rdf.png",      "partial_coordination.png", "fabric.png"};
+/// And the sections of a packing of spheres: 3D the planes normal to x, y, z through the
+/// container's centre; 2D the packing's own plane (section_xy.png).
+const char* const kSectionFiles[] = {"section_yz.png", "section_xz.png", "section_xy.png"};
+
+/// A section's name in its file and the CSV: the plane's two axes.
+std::string plane_name(const PackingSection& s) { return std::string(1, "xyz"[s.u_axis]) + "xyz"[s.v_axis]; }
+
+/// The sections as the plot script reads them: disks (plane,u,v,radius,size), then the
+/// container's outline (plane,u0,v0,u1,v1) with the plane's normal and offset in a header line.
+std::pair<std::string, std::string> sections_csv(const std::vector<PackingSection>& sections) {
+  std::ostringstream disks, outline;
+  disks.precision(17);
+  outline.precision(17);
+  disks << "plane,normal,offset,u,v,radius,size\n";
+  outline << "plane,u0,v0,u1,v1\n";
+  for (const PackingSection& s : sections) {
+    const std::string plane = plane_name(s);
+    for (const SectionDisk& d : s.disks)
+      disks << plane << ',' << "xyz"[s.normal_axis] << ',' << s.offset << ',' << d.u << ',' << d.v << ',' << d.radius << ','
+            << d.size << '\n';
+    if (s.disks.empty()) disks << plane << ',' << "xyz"[s.normal_axis] << ',' << s.offset << ",,,,\n";  // a plane that cuts none
+    for (const auto& seg : s.outline) outline << plane << ',' << seg[0] << ',' << seg[1] << ',' << seg[2] << ',' << seg[3] << '\n';
+  }
+  return {disks.str(), outline.str()};
+}
 
 /// A private folder inside the plots folder (mkdtemp: never one of the user's) for the script's
 /// input and output. Its files are registered for removal on Ctrl-C; removed with it at the end.
@@ -89,19 +115,29 @@ class PlotWorkFolder {
 
 /// Runs the plot script into a private folder and moves the figures into the plots folder only
 /// when every one was drawn; returns an empty string on success, else what went wrong.
-std::string draw_plots(const AnalyzeCommandOptions& o, const std::string& json_text, const std::string& cdf_text) {
+std::string draw_plots(const AnalyzeCommandOptions& o, const std::string& json_text, const std::string& cdf_text,
+                       const std::vector<PackingSection>& sections) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::exists(o.python, ec))
     return o.python + " not found: the plots need Debian's python3 and python3-matplotlib (apt-get install python3-matplotlib)";
   PlotWorkFolder work(o.plots_dir);
   const std::string json_path = work.file("analysis.json"), cdf_path = work.file("radius_cdf.csv");
+  std::vector<std::string> names(std::begin(kPlotFiles), std::end(kPlotFiles));
+  for (const PackingSection& s : sections) names.push_back("section_" + plane_name(s) + ".png");
   std::vector<std::string> drawn;
-  for (const char* name : kPlotFiles) drawn.push_back(work.file(name));
+  for (const std::string& name : names) drawn.push_back(work.file(name));
   write_text_file_atomically(json_path, json_text);
   write_text_file_atomically(cdf_path, cdf_text);
-  const std::string cmd = shell_quoted(o.python) + " " + shell_quoted(FRONTPACK_PLOT_SCRIPT) + " " +
-                          shell_quoted(json_path) + " " + shell_quoted(cdf_path) + " " + shell_quoted(work.path());
+  std::string cmd = shell_quoted(o.python) + " " + shell_quoted(FRONTPACK_PLOT_SCRIPT) + " " + shell_quoted(json_path) + " " +
+                    shell_quoted(cdf_path) + " " + shell_quoted(work.path());
+  if (!sections.empty()) {
+    const auto [disks, outline] = sections_csv(sections);
+    const std::string disks_path = work.file("sections.csv"), outline_path = work.file("outline.csv");
+    write_text_file_atomically(disks_path, disks);
+    write_text_file_atomically(outline_path, outline);
+    cmd += " " + shell_quoted(disks_path) + " " + shell_quoted(outline_path);
+  }
   const int status = std::system(cmd.c_str());
   if (!WIFEXITED(status)) return "the plot script did not finish";
   switch (WEXITSTATUS(status)) {
@@ -114,7 +150,7 @@ std::string draw_plots(const AnalyzeCommandOptions& o, const std::string& json_t
   const CleanupSignalsBlocked hold;  // all figures or none, Ctrl-C included
   std::size_t moved = 0;
   for (; moved < drawn.size(); ++moved) {
-    const std::string target = (fs::path(o.plots_dir) / kPlotFiles[moved]).string();
+    const std::string target = (fs::path(o.plots_dir) / names[moved]).string();
     if (std::rename(drawn[moved].c_str(), atomic_write_target(target).c_str()) != 0)
       return "cannot move " + target + " into place: " + std::strerror(errno) + " (" + std::to_string(moved) +
              " of " + std::to_string(drawn.size()) + " figures were replaced)";
@@ -125,7 +161,7 @@ std::string draw_plots(const AnalyzeCommandOptions& o, const std::string& json_t
 /// Prints and writes an analysis, spheres or shapes alike: the table, the JSON, the figures
 /// (`sizes` and `law`: the radius figure's sample and the law it is drawn against, if any).
 int report(const PackingAnalysis& a, const std::optional<Scene>& scene, const std::vector<double>& sizes,
-           const RadiusDistribution* law, const AnalyzeCommandOptions& o) {
+           const RadiusDistribution* law, const std::vector<PackingSection>& sections, const AnalyzeCommandOptions& o) {
   const std::string json = analysis_json(a);
   if (!o.json_path.empty()) write_text_file_atomically(o.json_path, json);
   if (!o.quiet) {
@@ -134,7 +170,7 @@ int report(const PackingAnalysis& a, const std::optional<Scene>& scene, const st
     std::printf("%s\n", a.summary().c_str());
   }
   if (o.plots_dir.empty()) return 0;
-  const std::string problem = draw_plots(o, json, radius_cdf_csv(sizes, law));
+  const std::string problem = draw_plots(o, json, radius_cdf_csv(sizes, law), sections);
   if (!problem.empty()) {
     std::fprintf(stderr, "frontpack: error: no plots: %s\n", problem.c_str());
     return 1;
@@ -158,13 +194,26 @@ std::pair<std::vector<double>, const RadiusDistribution*> radius_figure(const Pa
   return {sizes, one ? requested[0].size : nullptr};
 }
 
+/// The sections drawn with the figures: spheres (disks) in the scene's container, or the
+/// bounding box of the balls without a scene; none for shapes (not drawn yet).
+template <int D>
+std::vector<PackingSection> sections_of(const PackingInput& in, const Packing<D>& P) {
+  if (in.scene) return packing_sections<D>(P, *in.scene->container<D>());
+  const std::unique_ptr<Container<D>> box = bounding_box_of_balls(P);
+  return box ? packing_sections<D>(P, *box) : std::vector<PackingSection>{};
+}
+template <int D>
+std::vector<PackingSection> sections_of(const PackingInput&, const ShapePacking<D>&) {
+  return {};
+}
+
 /// The analysis of cli/pack_api.hpp (a packing of shapes at the scene's tolerance of `pack`,
 /// minimisation.gap_tolerance), reported.
 template <class P>
 int analyze(const PackingInput& in, const P& packing, const AnalyzeCommandOptions& o) {
   const PackingAnalysis a = analyze_input(in, o.tolerance, o.threads);
   const auto [sizes, law] = radius_figure(in, packing);
-  return report(a, in.scene, sizes, law, o);
+  return report(a, in.scene, sizes, law, o.plots_dir.empty() ? std::vector<PackingSection>{} : sections_of(in, packing), o);
 }
 
 }  // namespace
@@ -180,7 +229,9 @@ int run_analyze_command(const AnalyzeCommandOptions& o) {
       if (!std::filesystem::is_directory(o.plots_dir, ec))
         throw std::runtime_error("option --plots: plots folder '" + o.plots_dir +
                                  "' does not exist (frontpack does not create folders)");
-      for (const char* name : kPlotFiles)
+      std::vector<std::string> names(std::begin(kPlotFiles), std::end(kPlotFiles));
+      names.insert(names.end(), std::begin(kSectionFiles), std::end(kSectionFiles));
+      for (const std::string& name : names)
         writes.push_back({(std::filesystem::path(o.plots_dir) / name).string(), "option --plots", "figure"});
     }
     check_output_paths(writes, {});  // before reading: a bad path is refused at once

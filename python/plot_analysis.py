@@ -1,11 +1,15 @@
 #!/usr/bin/env python3
 """Figures of a frontpack analysis, called by `frontpack analyze --plots DIR`.
 
-    plot_analysis.py ANALYSIS.json RADIUS_CDF.csv OUT_DIR
+    plot_analysis.py ANALYSIS.json RADIUS_CDF.csv OUT_DIR [SECTIONS.csv OUTLINE.csv]
 
 ANALYSIS.json is core/io/analysis_json.hpp's layout; RADIUS_CDF.csv has columns
 r,empirical,requested (requested empty without a scene). Writes vf_curve.png,
 wall_profile.png, coordination.png, radii.png, rdf.png, partial_coordination.png and fabric.png.
+With SECTIONS.csv (plane,normal,offset,u,v,radius,size: each sphere's exact section by a plane,
+core/metrics/packing_sections.hpp) and OUTLINE.csv (plane,u0,v0,u1,v1: the container's section as
+segments), also section_<plane>.png for each plane: the sections coloured by the particle's
+radius, the container's outline in black.
 Exit code 3 when matplotlib is missing (Debian: apt-get install python3-matplotlib).
 """
 import csv
@@ -133,8 +137,43 @@ def fabric(a, out_dir):
     save(fig, out_dir, "fabric.png")
 
 
+def sections(disks_path, outline_path, out_dir):
+    from matplotlib.collections import LineCollection, PatchCollection
+    from matplotlib.patches import Circle
+
+    planes = {}
+    with open(disks_path) as f:
+        for row in csv.DictReader(f):
+            p = planes.setdefault(row["plane"], {"normal": row["normal"], "offset": float(row["offset"]), "disks": [],
+                                                 "outline": []})
+            if row["u"]:
+                p["disks"].append((float(row["u"]), float(row["v"]), float(row["radius"]), float(row["size"])))
+    with open(outline_path) as f:
+        for row in csv.DictReader(f):
+            planes[row["plane"]]["outline"].append(((float(row["u0"]), float(row["v0"])), (float(row["u1"]), float(row["v1"]))))
+    sizes = [d[3] for p in planes.values() for d in p["disks"]]
+    lo, hi = (min(sizes), max(sizes)) if sizes else (0.0, 1.0)
+    for name, p in planes.items():
+        fig, ax = plt.subplots(figsize=(6, 5.4))
+        if p["disks"]:
+            circles = PatchCollection([Circle((u, v), r) for u, v, r, _ in p["disks"]], cmap="viridis", linewidths=0)
+            circles.set_array([d[3] for d in p["disks"]])
+            circles.set_clim(lo, hi if hi > lo else lo + 1e-300)
+            ax.add_collection(circles)
+            fig.colorbar(circles, ax=ax, label="particle radius", shrink=0.8)
+        if p["outline"]:
+            ax.add_collection(LineCollection(p["outline"], colors="black", linewidths=1.0))
+        ax.autoscale_view()
+        ax.set_aspect("equal")
+        ax.set_xlabel(name[0])
+        ax.set_ylabel(name[1])
+        where = "" if p["normal"] == "z" and len(planes) == 1 else " at %s = %.6g" % (p["normal"], p["offset"])
+        ax.set_title("section%s: %d particles cut" % (where, len(p["disks"])))
+        save(fig, out_dir, "section_%s.png" % name)
+
+
 def main():
-    if len(sys.argv) != 4:
+    if len(sys.argv) not in (4, 6):
         sys.stderr.write(__doc__)
         return 2
     with open(sys.argv[1]) as f:
@@ -147,6 +186,8 @@ def main():
     rdf(a, out_dir)
     partial_coordination(a, out_dir)
     fabric(a, out_dir)
+    if len(sys.argv) == 6:
+        sections(sys.argv[4], sys.argv[5], out_dir)
     return 0
 
 

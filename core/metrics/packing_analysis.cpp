@@ -17,8 +17,6 @@
 #include "core/system/parallel_parts.hpp"
 
 namespace fp {
-namespace {
-
 template <int D>
 std::unique_ptr<Container<D>> bounding_box_of_balls(const Packing<D>& packing) {
   Aabb<D> box;
@@ -32,7 +30,8 @@ std::unique_ptr<Container<D>> bounding_box_of_balls(const Packing<D>& packing) {
   return std::make_unique<BoxContainer<D>>(BoxContainer<D>::from_local(box.lo, box.hi, packing.origin));
 }
 
-}  // namespace
+template std::unique_ptr<Container<2>> bounding_box_of_balls<2>(const Packing<2>&);
+template std::unique_ptr<Container<3>> bounding_box_of_balls<3>(const Packing<3>&);
 
 std::string PackingAnalysis::summary() const {
   std::string s;

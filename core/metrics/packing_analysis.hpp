@@ -15,6 +15,7 @@
 //   validation ......................................... validate.hpp
 // Plain data, the same for 2D and 3D (per-axis figures are vectors of D entries).
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -114,6 +115,11 @@ struct PackingAnalysis {
   /// A human-readable table of the headline figures (one per line, no trailing newline).
   std::string summary() const;
 };
+
+/// The bounding box of the balls (with a finite centre and a positive radius) as a container, in
+/// the packing's frame: the analysis' container when none is given; null when there is no such ball.
+template <int D>
+std::unique_ptr<Container<D>> bounding_box_of_balls(const Packing<D>& packing);
 
 /// Analyses a packing. container_or_null: without one, the bounding box of the balls stands in
 /// (container_from_particles). dist_or_null: the requested radius distribution, for the radii
