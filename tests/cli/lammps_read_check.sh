@@ -28,7 +28,9 @@ fix 2 all enforce2d'
     head='boundary f f f'
     fixes='fix 1 all nve/sphere'
   fi
+  # The README's snippet for spheres (keep in step).
   cat > in.lmp <<L
+units si
 $head
 atom_style sphere
 read_data $1
