@@ -14,6 +14,7 @@ trap 'rm -rf "$dir"' EXIT
 cd "$dir"
 . "$here/block_scenes.sh"
 
+# The README's YADE script (keep in step), with the test's counting around it.
 cat > check.py <<'P'
 import sys
 from yade import ymport
