@@ -60,9 +60,11 @@ int run_pack(fp::PackCommandOptions& pack, int argc, char** argv) {
 /// The options `pack` and `densify` share: where and how the packing is written, the seed, the
 /// record, quiet.
 void add_output_options(CLI::App* cmd, fp::PackCommandOptions& o, std::string& seed_text, const CLI::Validator& decimal_seed) {
-  cmd->add_option("-o,--output", o.output_path,
-                  "write the packing to PATH (replaces the scene's output list; format from --format or the extension)");
-  cmd->add_option("--format", o.format, "format of -o: vtu | yade | lammps | csv | json");
+  cmd->add_option("-o,--output", o.output_paths,
+                  "write the packing to PATH, repeatable (replaces the scene's output list; each format from its "
+                  "extension, or --format for a single -o)")
+      ->allow_extra_args(false);  // one PATH per -o: `-o a.csv scene.yaml` keeps the scene an argument
+  cmd->add_option("--format", o.format, "format of a single -o: vtu | yade | lammps | csv | json");
   cmd->add_option("--seed", seed_text, "override the scene's 64-bit seed (decimal)")->check(decimal_seed);
   cmd->add_option("--record", o.record_path, "also write the JSON run record (without particles) to PATH");
   cmd->add_flag("-q,--quiet", o.quiet, "no summary on stdout");
@@ -92,7 +94,8 @@ void add_set_option(CLI::App* cmd, std::vector<fp::SceneOverride>& overrides) {
 }
 
 int run(int argc, char** argv) {
-  CLI::App app{"frontpack: dense packings of spheres and disks by the advancing front"};
+  CLI::App app{"frontpack: dense packings of spheres, disks and non-spherical particles (2D and 3D) by the advancing "
+               "front, and the methods beside it"};
   app.set_version_flag("--version", std::string("frontpack ") + fp::kVersion);
   app.require_subcommand(1);
 

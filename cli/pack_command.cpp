@@ -42,17 +42,22 @@ struct InputError : std::runtime_error {
 /// their side files, the record) before any work is done, so a bad path costs nothing and
 /// creates nothing, and no output replaces another or an input.
 void apply_output_options(Scene& scene, const PackCommandOptions& o) {
-  if (!o.format.empty() && o.output_path.empty()) throw InputError("--format needs -o PATH");
-  if (!o.output_path.empty()) {
-    OutputSpec out;
-    out.path = o.output_path;
-    try {
-      out.format = output_format_name(o.format.empty() ? format_from_extension(o.output_path)
-                                                       : parse_output_format(o.format));
-    } catch (const std::invalid_argument& e) {
-      throw InputError(e.what());
+  if (!o.format.empty() && o.output_paths.size() != 1)
+    throw InputError(o.output_paths.empty() ? "--format needs -o PATH"
+                                            : "--format names the format of one -o; with several, each takes its format "
+                                              "from its extension (.vtu, .txt/.yade, .data/.lammps, .csv, .json)");
+  if (!o.output_paths.empty()) {
+    scene.outputs.clear();
+    for (const std::string& path : o.output_paths) {
+      OutputSpec out;
+      out.path = path;
+      try {
+        out.format = output_format_name(o.format.empty() ? format_from_extension(path) : parse_output_format(o.format));
+      } catch (const std::invalid_argument& e) {
+        throw InputError(e.what());
+      }
+      scene.outputs.push_back(out);
     }
-    scene.outputs = {out};
   }
   std::vector<NamedPath> writes;
   for (const OutputSpec& out : scene.outputs) {
@@ -75,7 +80,7 @@ template <int D, class Kind, class Make>
 int run(const Scene& scene, const PackCommandOptions& o, Make&& make) {
   const Container<D>& container = *scene.container<D>();
   const bool root = !o.exchange || o.exchange->process() == 0;
-  const typename Kind::Result res = pack_with_progress(o.progress && root, make);
+  const typename Kind::Result res = pack_with_progress(o.progress && root, scene, make);
   if (!root) return 0;  // rank 0 holds the packing: it checks, writes and summarises
   const auto& P = res.packing;
   const double rate = particles_per_second(P.size(), res.seconds);

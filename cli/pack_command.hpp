@@ -17,8 +17,8 @@ struct PackCommandOptions {
   std::vector<SceneOverride> scene_overrides;  ///< --set KEY=VALUE, in order
   std::string input_path;              ///< densify: the packing to fill (else the scene is packed)
   std::string input_format;            ///< densify: its format (default: from its extension)
-  std::string output_path;             ///< -o: replaces the scene's outputs
-  std::string format;                  ///< --format for -o
+  std::vector<std::string> output_paths;  ///< -o, repeatable: replace the scene's outputs
+  std::string format;                  ///< --format for a single -o
   std::string record_path;             ///< --record: JSON run record without particles
   std::optional<std::uint64_t> seed;   ///< --seed
   std::optional<int> threads;          ///< -j/--threads (replaces the scene's packer.threads)

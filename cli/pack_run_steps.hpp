@@ -23,8 +23,8 @@ namespace fp {
 
 /// `pack(progress)` with the progress line on stderr when `shown` (--progress, or a terminal).
 template <class Pack>
-auto pack_with_progress(bool shown, Pack&& pack) {
-  ProgressLine progress(shown);
+auto pack_with_progress(bool shown, const Scene& scene, Pack&& pack) {
+  ProgressLine progress(shown, scene);
   ProgressFn fn;
   if (progress.on()) fn = [&](std::uint64_t n, double t, double vf) { progress(n, t, vf); };
   auto result = pack(fn);

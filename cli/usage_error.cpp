@@ -15,8 +15,7 @@ std::string usage_error_text(const CLI::ParseError& e, const std::string& comman
   if (std::regex_match(what, m, std::regex(R"((\S+): \1 (.*))")))  // our validators name the option themselves
     return m[1].str() + " " + excerpt(m[2].str(), 240);
   if (std::regex_match(what, m, std::regex(R"((\S+): At Most 1 required but received (\d+))")))
-    return m[1].str() + " is given " + m[2].str() + " times; it takes one" +
-           (m[1].str() == "--output" ? " (more outputs: the scene's 'output:' list, one entry per file)" : std::string());
+    return m[1].str() + " is given " + m[2].str() + " times; it takes one";
   if (std::regex_match(what, m, std::regex(R"(The following arguments? (?:was|were) not expected: (.*))")))
     return "unexpected argument" + std::string(m[1].str().find(' ') != std::string::npos ? "s " : " ") + excerpt(m[1].str()) +
            help;

@@ -95,6 +95,22 @@ TEST(CliBasics, QuietPrintsNothing) {
   EXPECT_TRUE(fs::exists(dir.work() / "out.csv"));
 }
 
+// Several -o in one run: each file in the format of its extension, the scene before or after
+// them; the packing the same in every file (the csv and the json's particles agree).
+TEST(CliBasics, SeveralOutputsEachInTheFormatOfItsExtension) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", "dimension: 3\nseed: 4\ncontainer: {type: box, min: [0, 0, 0], max: [0.2, 0.2, 0.2]}\n"
+                                     "particles: {radius: {distribution: uniform, min: 0.02, max: 0.03}}\n");
+  const RunResult r = run_frontpack(dir, "pack -o p.csv s.yaml -o p.vtu -o p.json");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  for (const char* line : {"output         p.csv (csv)", "output         p.vtu (vtu)", "output         p.json (json)"})
+    EXPECT_NE(r.out.find(line), std::string::npos) << line << "\n" << r.out;
+  EXPECT_EQ(read_bytes(dir.work() / "p.vtu").rfind("<?xml", 0), 0u);
+  EXPECT_NE(read_bytes(dir.work() / "p.json").find("\"particles\""), std::string::npos);
+  ASSERT_EQ(run_frontpack(dir, "pack s.yaml -q -o alone.csv").exit_code, 0);
+  EXPECT_EQ(read_bytes(dir.work() / "alone.csv"), read_bytes(dir.work() / "p.csv"));
+}
+
 TEST(CliBasics, ProgressFlagWritesToStderrOnly) {
   // --progress forces the progress line even into a file; it appears every 0.5 s, and the
   // time limit keeps the run at 0.8 s (which leaves the packing incomplete).

@@ -500,7 +500,10 @@ TEST(CliHostileSignals, SigtermWhileWritingLeavesNoTemporary) { expect_killed_ru
 // The command line's own refusals in frontpack's words: one "frontpack: error:" line, the
 // option named, a long value cut to its first 80 characters; nothing written.
 TEST(CliHostileParser, RefusalsInOurWords) {
-  expect_refused(with_scene(), "pack s.yaml -o a.csv -o b.csv", 2, {"frontpack: error: --output is given 2 times", "'output:' list"});
+  expect_refused(with_scene(), "pack s.yaml -o a.csv -o b.csv --format csv", 2,
+                 {"frontpack: error: --format names the format of one -o", "from its extension"});
+  expect_refused(with_scene(), "pack s.yaml -o a.csv -o ./a.csv", 2, {"is the same file as output 'a.csv'"});
+  expect_refused(with_scene(), "pack s.yaml --seed 1 --seed 2 -o a.csv", 2, {"frontpack: error: --seed is given 2 times; it takes one"});
   expect_refused(with_scene(), "pack", 2, {"frontpack: error: missing the argument SCENE"});
   expect_refused(with_scene(), "pack s.yaml extra", 2, {"frontpack: error: unexpected argument extra", "frontpack pack --help"});
   expect_refused(with_scene(), "pack s.yaml --nonsense", 2, {"frontpack: error: unexpected argument --nonsense"});
