@@ -18,6 +18,7 @@
 #include "core/io/run_record.hpp"
 #include "core/io/scene.hpp"
 #include "front/pack_result.hpp"
+#include "shapes/io/shape_packing_writers.hpp"
 
 namespace fp {
 
@@ -61,7 +62,16 @@ inline void print_output_lines(const Scene& scene, const std::string& record_pat
   const auto note = [&](const std::string& path) {
     return std::find(spared.begin(), spared.end(), path) != spared.end() ? "; not written: the file there is kept" : "";
   };
-  for (const OutputSpec& out : scene.outputs) std::printf("  output         %s (%s%s)\n", out.path.c_str(), out.format.c_str(), note(out.path));
+  for (const OutputSpec& out : scene.outputs) {
+    std::printf("  output         %s (%s%s)\n", out.path.c_str(), out.format.c_str(), note(out.path));
+    if (scene.particle_templates.empty()) continue;  // shapes: the side files their vtu and lammps outputs write
+    for (const std::string& side : companion_paths(parse_output_format(out.format), out.path)) {
+      std::error_code ec;
+      const auto bytes = std::filesystem::file_size(side, ec);
+      std::printf("  side file      %s (of %s%s%s)\n", side.c_str(), out.path.c_str(),
+                  ec ? "" : (", " + std::to_string(bytes / 1000000.0).substr(0, 5) + " MB").c_str(), note(side));
+    }
+  }
   if (!record_path.empty()) std::printf("  run record     %s%s\n", record_path.c_str(), note(record_path));
 }
 

@@ -66,7 +66,11 @@ inline std::string particles_description(const Scene& scene) {
   if (scene.particle_templates.empty())
     return scene.radii->describe() + (scene.stop.scale_sizes ? ", scaled so that stop.particles fill the container" : "");
   std::string d;
-  for (const ParticleTemplateSpec& t : scene.particle_templates) d += (d.empty() ? "" : "; ") + t.family + " " + t.size->describe();
+  for (const ParticleTemplateSpec& t : scene.particle_templates) {  // the size law with the dimension it is drawn on
+    std::string on = t.size_on;
+    for (char& c : on) c = c == '_' ? ' ' : c;
+    d += (d.empty() ? "" : "; ") + t.family + " " + t.size->describe() + " on the " + on;
+  }
   return d;
 }
 

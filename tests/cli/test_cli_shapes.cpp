@@ -50,6 +50,9 @@ TEST_P(CliShapes, CapsulesEveryFormat) {
   EXPECT_EQ(r.err.rfind("frontpack: error: the packing is valid but incomplete: stop.particles (" + std::to_string(n) +
                         ") ended the packing before it filled the container", 0), 0u) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  // The summary names the side file with its size, and the dimension each size law is drawn on.
+  EXPECT_NE(r.out.find("side file      out/caps.surfaces.vtu (of out/caps.vtu, "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" on the circumscribed radius"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("validation     ok"), std::string::npos) << r.out;
   EXPECT_EQ(listing(dir.work() / "out"), (std::set<std::string>{"caps.vtu", "caps.surfaces.vtu", "caps.csv", "caps.json", "rec.json"}));
 
