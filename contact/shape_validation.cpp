@@ -5,12 +5,18 @@
 #include "contact/narrow_phase.hpp"
 #include "contact/shape_containment.hpp"
 #include "core/metrics/validate_particles.hpp"
+#include "shapes/template_fractions.hpp"
 
 namespace fp {
 
 std::vector<RequestedTemplate> requested_templates(const Scene& scene) {
-  std::vector<RequestedTemplate> requested;  // template ids follow the scene's list
-  for (const ParticleTemplateSpec& t : scene.particle_templates) requested.push_back({t.size.get(), t.fraction, &t.orientation});
+  std::vector<RequestedTemplate> requested;  // template ids follow the scene's list, shares by number
+  const std::vector<double> shares = scene.particle_templates.empty() ? std::vector<double>{}
+                                     : scene.dimension == 2 ? number_fractions<2>(scene) : number_fractions<3>(scene);
+  for (std::size_t k = 0; k < scene.particle_templates.size(); ++k) {
+    const ParticleTemplateSpec& t = scene.particle_templates[k];
+    requested.push_back({t.size.get(), shares[k], &t.orientation});
+  }
   return requested;
 }
 

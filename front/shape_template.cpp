@@ -4,12 +4,14 @@
 
 #include "core/io/scene_error.hpp"
 #include "core/sampling/radius_moment.hpp"
+#include "shapes/template_fractions.hpp"
 
 namespace fp {
 
 template <int D>
 std::vector<ShapeTemplate<D>> resolve_templates(const Scene& scene) {
   std::vector<ShapeTemplate<D>> out;
+  const std::vector<double> shares = number_fractions<D>(scene);  // by volume: converted to number
   for (const ParticleTemplateSpec& spec : scene.particle_templates) {
     ShapeTemplate<D> t;
     t.family = spec.family;
@@ -18,7 +20,7 @@ std::vector<ShapeTemplate<D>> resolve_templates(const Scene& scene) {
     t.scale_per_size = 1.0 / t.prototype.dimensions.at(spec.size_on);
     t.orientation = spec.orientation;
     t.orientation_law = spec.orientation.law<D>();
-    t.fraction = spec.fraction;
+    t.fraction = shares[out.size()];
     out.push_back(std::move(t));
   }
   return out;

@@ -259,13 +259,18 @@ struct ShapeParameters {
 
 /// One particle template: a shape family, its parameters, a size distribution on a named
 /// dimension and an orientation distribution. `fraction` weights templates by number.
+/// What a template's `fraction` is a share of: the particles' number, or their volume (mass:
+/// one material for every template, so the same shares).
+enum class FractionBasis { Number, Volume };
+
 struct ParticleTemplateSpec {
   std::string family;                                  ///< "sphere", "spherocylinder", "polyhedron", ...
   ShapeParameters parameters;
   std::string size_on = "circumscribed_radius";         ///< which dimension `size` is drawn on
   RadiusDistributionPtr size;                           ///< the size distribution (on that dimension)
   OrientationSpec orientation;
-  double fraction = 1.0;                                ///< share by number among the templates
+  double fraction = 1.0;                                ///< share among the templates, on fraction_basis
+  FractionBasis fraction_basis = FractionBasis::Number; ///< `fraction: 0.3` by number; `{volume: 0.3}`, `{mass: 0.3}`
 };
 
 struct Scene {

@@ -891,7 +891,18 @@ ParticleTemplateSpec parse_template(const Value& v) {
     if (t.size_on.empty()) x->fail("must name a dimension of the shape, e.g. circumscribed_radius");
   }
   if (auto x = m.find("orientation")) t.orientation = parse_orientation<D>(*x);
-  if (auto x = m.find("fraction")) t.fraction = x->positive();
+  if (auto x = m.find("fraction")) {
+    if (x->node().IsMap()) {  // {number | volume | mass: share}
+      const Map f = x->map();
+      f.check_known({"number", "volume", "mass"});
+      if (f.keys().size() != 1) x->fail("give one of number, volume or mass, e.g. {volume: 0.3}");
+      const std::string basis = f.keys().front();
+      t.fraction = f.find(basis)->positive();
+      t.fraction_basis = basis == "number" ? FractionBasis::Number : FractionBasis::Volume;
+    } else {
+      t.fraction = x->positive();
+    }
+  }
   return t;
 }
 
@@ -905,6 +916,13 @@ bool parse_particles(const Value& v, const Container<D>& container, Scene& scene
     for (const auto& item : items) {
       if (!item.node().IsMap()) item.fail("expected a particle template {shape: ..., size: ...}, got " + shown(item.node()));
       scene.particle_templates.push_back(parse_template<D>(item));
+      // Shares are of one whole: every `fraction` on the first template's basis.
+      const ParticleTemplateSpec& first = scene.particle_templates.front();
+      ParticleTemplateSpec& last = scene.particle_templates.back();
+      if (!item.map().has("fraction")) last.fraction_basis = first.fraction_basis;  // the default share, 1, on it
+      if (last.fraction_basis != first.fraction_basis)
+        item.map().find("fraction")->fail("every template's fraction must be on the same basis (number, or volume = mass), "
+                                          "as the first template's");
     }
     return true;
   }

@@ -238,3 +238,33 @@ TEST(CliShapesRefused, FamilyMissingInTwoD) {
 
 }  // namespace
 }  // namespace fptest
+
+namespace fptest {
+namespace {
+
+// `fraction: {volume: ...}`: spheres of radii 0.1 and 0.2 half the solid each, so 8 small ones
+// for a large one by number; the packing validates (its mix test against those number shares)
+// and its solid is shared half and half within sampling.
+TEST(CliShapesFractions, ByVolumeTheSolidIsSharedAsAsked) {
+  TempDir dir;
+  write_bytes(dir.work() / "s.yaml", "dimension: 3\nseed: 2\ncontainer: {type: box, min: [0, 0, 0], max: [3, 3, 3]}\nparticles:\n"
+                                     "  - {shape: sphere, size: {distribution: constant, value: 0.1}, fraction: {volume: 1}}\n"
+                                     "  - {shape: sphere, size: {distribution: constant, value: 0.2}, fraction: {mass: 1}}\n");
+  const RunResult r = run_frontpack(dir, "pack s.yaml -o p.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const std::vector<std::string> rows = lines_of(read_bytes(dir.work() / "p.csv"));
+  double small = 0, large = 0, n_small = 0;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const double size = std::stod(rows[i].substr(rows[i].rfind(',', rows[i].rfind(',') - 1) + 1));
+    (size < 0.15 ? small : large) += size * size * size;
+    n_small += size < 0.15;
+  }
+  const double n = static_cast<double>(rows.size() - 1), p = 8.0 / 9.0;
+  EXPECT_GT(n, 1500);
+  EXPECT_NEAR(n_small / n, p, 4 * std::sqrt(p * (1 - p) / n)) << n_small << " of " << n;
+  // The solid's share v = (n - m) / (n + 7 m), m ~ Binomial(n, 1/9) large ones: sd 0.7955 / sqrt(n).
+  EXPECT_NEAR(small / (small + large), 0.5, 4 * 0.7955 / std::sqrt(n));
+}
+
+}  // namespace
+}  // namespace fptest
