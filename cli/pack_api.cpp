@@ -46,16 +46,16 @@ PackOutcome pack_as(const Scene& scene, const ProgressFn& progress) {
 template <int D>
 PackingAnalysis analyze_as(const PackingInput& in, const Packing<D>& P, double tolerance, int threads) {
   const Container<D>* container = nullptr;
-  const RadiusDistribution* law = nullptr;
+  RadiusDistributionPtr law;  // the law pack and validate test against (scaled to fill: fitted)
   AnalysisOptions opt;
   if (in.scene) {
     container = in.scene->container<D>();
-    law = in.scene->radii.get();
+    law = radii_to_check(*in.scene, P.radii);
     opt.contact_tolerance = in.scene->packer.contact_tolerance;
   }
   if (tolerance >= 0) opt.contact_tolerance = tolerance;
   opt.threads = thread_count(threads);
-  return analyze_packing<D>(P, container, law, opt);
+  return analyze_packing<D>(P, container, law.get(), opt);
 }
 
 template <int D>

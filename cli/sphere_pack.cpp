@@ -333,9 +333,9 @@ PackCheck SpherePack<D>::check(const Scene& scene, const Result& res, CheckDepth
                                     res.solid_measure / container.measure());
   c.counters.emplace_back("grid_bytes", res.grid_bytes);
   if (res.sizes_scaled) {
-    const auto* fitted = dynamic_cast<const ScaledRadius*>(law.get());
+    const auto* scaled_law = dynamic_cast<const ScaledRadius*>(law.get());
     add_size_scaling_lines(c, *res.sizes_scaled, res.packing.size(), res.solid_measure / container.measure(),
-                           fitted ? fitted->scale() : std::nan(""));
+                           scaled_law ? scaled_law->scale() : std::nan(""));
   }
   else if (!res.given && !res.tet_filled && !res.stacked)  // the front's own stop (the others fill the whole container)
     add_cut_short_reason(c, scene.stop, res.stop, res.packing.size(), res.solid_measure / container.measure());

@@ -71,6 +71,10 @@ TEST_P(CliScaleSizes, NParticlesFillTheContainer) {
   // The file alone, against the scene file: valid, its radii the law's shape.
   const RunResult v = run_frontpack(dir, "validate p.csv --scene s.yaml");
   EXPECT_EQ(v.exit_code, 0) << v.out << v.err;
+  const RunResult a = run_frontpack(dir, "analyze p.csv --scene s.yaml");  // the same law as validate's
+  EXPECT_EQ(a.exit_code, 0) << a.err;
+  EXPECT_NE(a.out.find(", scaled by "), std::string::npos) << a.out;
+  EXPECT_NE(a.out.find("validate: OK"), std::string::npos) << a.out;
 
   // The full packing at that scale: the law written out, no stop.
   const Case scaled{c.name, c.dimension, c.container, c.r_min * scale, c.r_max * scale, 0};
