@@ -5,8 +5,7 @@
 #include <cstdio>
 #include <memory>
 
-#include "core/geometry/vec.hpp"
-#include "core/sampling/radius_moment.hpp"
+#include "core/io/scene_limits.hpp"
 #include "core/sampling/scaled_radius.hpp"
 #include "front/container_too_small.hpp"
 #include "front/pack.hpp"
@@ -31,11 +30,9 @@ SizeScaling solve_size_scale(const Scene& scene, const ProgressFn& progress) {
   const double n_asked = static_cast<double>(N);
   // The first guess: N balls of the law's mean measure at a solid fraction of random packings.
   const double phi = D == 3 ? 0.6 : 0.8;
-  const double mean_measure = D == 3 ? 4.0 / 3.0 * kPi * radius_moment(*scene.radii, 3) : kPi * radius_moment(*scene.radii, 2);
-  double s = std::pow(phi * scene.container<D>()->measure() / (n_asked * mean_measure), 1.0 / D);
+  double s = std::pow(phi * scene.container<D>()->measure() / (n_asked * mean_ball_measure(*scene.radii, D)), 1.0 / D);
   SizeScaling best;
   best.asked = N;
-  bool have = false;
   for (int trial = 0; trial < kMaxScaleTrials; ++trial) {
     Scene t = with_radii_scaled(scene, s);
     t.stop.max_particles = 2 * N;  // a first guess far too small stops here
@@ -48,8 +45,8 @@ SizeScaling solve_size_scale(const Scene& scene, const ProgressFn& progress) {
     ++best.trials;
     const SizeScaling now{N, s, n};
     // Keep the smallest count at or above N; below N, the largest.
-    const bool better = !have || (n >= N ? best.full_count < N || n < best.full_count : best.full_count < N && n > best.full_count);
-    if (better) best.scale = s, best.full_count = n, have = true;
+    const bool better = trial == 0 || (n >= N ? best.full_count < N || n < best.full_count : best.full_count < N && n > best.full_count);
+    if (better) best.scale = s, best.full_count = n;
     if (now.found()) break;
     // Aim at the middle of the band: the count goes as s^-D.
     s *= n == 0 ? 0.5 : std::pow(static_cast<double>(n) / (n_asked * (1 + kScaleSlack / 2)), 1.0 / D);
