@@ -1,9 +1,6 @@
 #include "front/shape_template.hpp"
 
-#include <cmath>
-
 #include "core/io/scene_error.hpp"
-#include "core/sampling/radius_moment.hpp"
 #include "shapes/template_fractions.hpp"
 
 namespace fp {
@@ -11,7 +8,7 @@ namespace fp {
 template <int D>
 std::vector<ShapeTemplate<D>> resolve_templates(const Scene& scene) {
   std::vector<ShapeTemplate<D>> out;
-  const std::vector<double> shares = number_fractions<D>(scene);  // by volume: converted to number
+  std::vector<double> measures;
   for (const ParticleTemplateSpec& spec : scene.particle_templates) {
     ShapeTemplate<D> t;
     t.family = spec.family;
@@ -20,9 +17,11 @@ std::vector<ShapeTemplate<D>> resolve_templates(const Scene& scene) {
     t.scale_per_size = 1.0 / t.prototype.dimensions.at(spec.size_on);
     t.orientation = spec.orientation;
     t.orientation_law = spec.orientation.law<D>();
-    t.fraction = shares[out.size()];
+    measures.push_back(mean_particle_measure<D>(t.prototype, t.scale_per_size, *t.size));
     out.push_back(std::move(t));
   }
+  const std::vector<double> shares = number_fractions(scene, measures);  // by volume: converted to number
+  for (std::size_t k = 0; k < out.size(); ++k) out[k].fraction = shares[k];
   return out;
 }
 
@@ -30,7 +29,7 @@ template <int D>
 double mean_measure(const std::vector<ShapeTemplate<D>>& templates) {
   double sum = 0, weights = 0;
   for (const ShapeTemplate<D>& t : templates) {
-    sum += t.fraction * t.prototype.shape->measure() * std::pow(t.scale_per_size, D) * radius_moment(*t.size, D);
+    sum += t.fraction * mean_particle_measure<D>(t.prototype, t.scale_per_size, *t.size);
     weights += t.fraction;
   }
   return sum / weights;

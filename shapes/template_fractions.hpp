@@ -7,17 +7,22 @@
 #include <vector>
 
 #include "core/io/scene.hpp"
+#include "shapes/shape_registry.hpp"
 
 namespace fp {
 
-/// The number share of each of the scene's templates (summing to 1), in the scene's order.
-/// Throws SceneError as ShapeFamilies::prototype does for a template it cannot make.
+/// The mean measure of one particle of a template: `prototype` (circumscribed radius 1) scaled
+/// by `scale_per_size` times the size drawn from `size`.
+template <int D>
+double mean_particle_measure(const ShapePrototype<D>& prototype, double scale_per_size, const RadiusDistribution& size);
+
+/// The number share of each of the scene's templates (summing to 1), in the scene's order, from
+/// each template's mean particle measure (`measures`, used for fractions by volume).
+std::vector<double> number_fractions(const Scene& scene, const std::vector<double>& measures);
+
+/// The same, each template's prototype made from the scene. Throws SceneError as
+/// ShapeFamilies::prototype does for a template it cannot make.
 template <int D>
 std::vector<double> number_fractions(const Scene& scene);
-
-/// The mean measure of one particle of a template (its prototype at circumscribed radius 1
-/// scaled by the size drawn on its `size_on` dimension).
-template <int D>
-double mean_particle_measure(const ParticleTemplateSpec& spec);
 
 }  // namespace fp
