@@ -22,6 +22,8 @@ export LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp:print_suppressions=
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags" -DCMAKE_SHARED_LINKER_FLAGS="$flags" \
   -DFRONTPACK_BUILD_TESTS=ON -DFRONTPACK_BUILD_BENCH=OFF \
-  -DPython3_EXECUTABLE=/usr/bin/python3 >/dev/null
+  -DPython3_EXECUTABLE=/usr/bin/python3 \
+  -DFRONTPACK_PYTHON_TEST_PRELOAD="$(g++ -print-file-name=libasan.so):$(g++ -print-file-name=libubsan.so)" \
+  >/dev/null
 cmake --build build-asan -j"${JOBS:-1}"
 ctest --test-dir build-asan --output-on-failure -j"${CTEST_JOBS:-1}" "$@"
