@@ -63,9 +63,8 @@ void apply_output_options(Scene& scene, const PackCommandOptions& o) {
   for (const OutputSpec& out : scene.outputs) {
     const std::string where = out.spot.file.empty() ? "option -o" : out.spot.describe();
     writes.push_back({out.path, where, "output"});
-    if (!scene.particle_templates.empty())  // shape packings write a side file for vtu and lammps
-      for (const std::string& side : companion_paths(parse_output_format(out.format), out.path))
-        writes.push_back({side, where, "the side file of output '" + out.path + "'"});
+    for (const std::string& side : side_files(scene, out))
+      writes.push_back({side, where, "the side file of output '" + out.path + "'"});
   }
   if (!o.record_path.empty()) writes.push_back({o.record_path, "option --record", "run record"});
   std::vector<NamedPath> reads = scene_reads(scene, o.input_path.empty() ? "argument SCENE" : "option --scene");
@@ -102,7 +101,10 @@ int run(const Scene& scene, const PackCommandOptions& o, Make&& make) {
 
   std::vector<std::string> spared;
   const double write_seconds = write_outputs(
-      scene, o.record_path, rec, [&](OutputFormat format, const std::string& path) { write_packing<D>(format, path, P, rec); },
+      scene, o.record_path, rec, [&](OutputFormat format, const std::string& path) {
+        write_packing<D>(format, path, P, rec);
+        if (format == OutputFormat::Vtu) write_container_vtu(container_vtu_path(path), container);
+      },
       !check.valid() || !check.incomplete.empty(), &spared);  // a stop the scene asked for is written
 
   if (!o.quiet) {

@@ -14,6 +14,7 @@
 #include "cli/failure_report.hpp"
 #include "cli/progress_line.hpp"
 #include "core/io/atomic_file.hpp"
+#include "core/io/container_vtu.hpp"
 #include "core/io/output_format.hpp"
 #include "core/io/run_record.hpp"
 #include "core/io/scene.hpp"
@@ -21,6 +22,17 @@
 #include "shapes/io/shape_packing_writers.hpp"
 
 namespace fp {
+
+/// The files an output writes besides its own path: a shape packing's companion (its surfaces
+/// beside a vtu output, its clumps beside a lammps one), and beside every vtu output the
+/// container's boundary (core/io/container_vtu.hpp), so that ParaView shows the walls.
+inline std::vector<std::string> side_files(const Scene& scene, const OutputSpec& out) {
+  const OutputFormat format = parse_output_format(out.format);
+  std::vector<std::string> sides;
+  if (!scene.particle_templates.empty()) sides = companion_paths(format, out.path);
+  if (format == OutputFormat::Vtu) sides.push_back(container_vtu_path(out.path));
+  return sides;
+}
 
 /// `pack(progress)` with the progress line on stderr when `shown` (--progress, or a terminal).
 template <class Pack>
@@ -64,8 +76,7 @@ inline void print_output_lines(const Scene& scene, const std::string& record_pat
   };
   for (const OutputSpec& out : scene.outputs) {
     std::printf("  output         %s (%s%s)\n", out.path.c_str(), out.format.c_str(), note(out.path));
-    if (scene.particle_templates.empty()) continue;  // shapes: the side files their vtu and lammps outputs write
-    for (const std::string& side : companion_paths(parse_output_format(out.format), out.path)) {
+    for (const std::string& side : side_files(scene, out)) {
       std::error_code ec;
       const auto bytes = std::filesystem::file_size(side, ec);
       std::printf("  side file      %s (of %s%s%s)\n", side.c_str(), out.path.c_str(),

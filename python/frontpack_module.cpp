@@ -26,6 +26,8 @@
 #include "cli/packing_input.hpp"
 #include "cli/study_command.hpp"
 #include "core/io/analysis_json.hpp"
+#include "core/io/atomic_file.hpp"
+#include "core/io/container_vtu.hpp"
 #include "core/io/output_format.hpp"
 #include "core/io/output_paths.hpp"
 #include "core/io/packing_writers.hpp"
@@ -213,13 +215,22 @@ void write_file(const PyPacking& p, const py::object& where, const std::string& 
   if (in.shapes)  // shape packings write a side file for vtu and lammps
     for (const std::string& side : companion_paths(f, path))
       writes.push_back({side, "Packing.write", "the side file of output '" + path + "'"});
+  // Beside a vtu output, the container's boundary, when the scene it was packed in is known.
+  const bool container_file = f == OutputFormat::Vtu && in.scene;
+  if (container_file) writes.push_back({container_vtu_path(path), "Packing.write", "the side file of output '" + path + "'"});
   check_output_paths(writes, in.scene ? scene_reads(*in.scene, "the scene of frontpack.pack") : std::vector<NamedPath>{});
   const py::gil_scoped_release released;
+  AtomicFileGroup all_or_nothing;
   if (in.shapes) {
     in.dimension == 2 ? write_packing<2>(f, path, in.shapes2, p.run.record) : write_packing<3>(f, path, in.shapes3, p.run.record);
   } else {
     in.dimension == 2 ? write_packing<2>(f, path, in.packing2, p.run.record) : write_packing<3>(f, path, in.packing3, p.run.record);
   }
+  if (container_file) {
+    if (in.dimension == 2) write_container_vtu(container_vtu_path(path), *in.scene->container<2>());
+    else write_container_vtu(container_vtu_path(path), *in.scene->container<3>());
+  }
+  all_or_nothing.commit();
 }
 
 /// A CSV cell as Python: a number, a flag, or the text.

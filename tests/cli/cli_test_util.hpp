@@ -82,6 +82,13 @@ inline std::string quoted(const std::string& s) {
   return q + "'";
 }
 
+/// Runs a Python check (Debian's python3, which has vtk and json) with the file paths as argv.
+inline int python_check(const std::string& code, const std::vector<fs::path>& args) {
+  std::string cmd = "/usr/bin/python3 -c " + quoted(code);
+  for (const auto& a : args) cmd += " " + quoted(a.string());
+  return std::system(cmd.c_str());
+}
+
 /// Runs `frontpack <args>` in dir.work(), after the shell command `before` if one is given (e.g.
 /// "ulimit -v 1000000"); args are already quoted where needed.
 inline RunResult run_frontpack(const TempDir& dir, const std::string& args, const std::string& before = "") {

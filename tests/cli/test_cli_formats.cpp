@@ -118,13 +118,6 @@ std::vector<Particle> parse_lammps(const std::string& text) {
   return ps;
 }
 
-/// Runs a Python check (Debian's python3, which has vtk and json) with the file paths as argv.
-int python_check(const std::string& code, const std::vector<fs::path>& args) {
-  std::string cmd = "/usr/bin/python3 -c " + quoted(code);
-  for (const auto& a : args) cmd += " " + quoted(a.string());
-  return std::system(cmd.c_str());
-}
-
 // The CSV of the same seed, read back in Python, is the reference for VTU and JSON.
 const std::string kPyReadCsv = R"(
 import sys, csv

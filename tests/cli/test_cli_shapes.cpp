@@ -54,7 +54,7 @@ TEST_P(CliShapes, CapsulesEveryFormat) {
   EXPECT_NE(r.out.find("side file      out/caps.surfaces.vtu (of out/caps.vtu, "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find(" on the circumscribed radius"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("validation     ok"), std::string::npos) << r.out;
-  EXPECT_EQ(listing(dir.work() / "out"), (std::set<std::string>{"caps.vtu", "caps.surfaces.vtu", "caps.csv", "caps.json", "rec.json"}));
+  EXPECT_EQ(listing(dir.work() / "out"), (std::set<std::string>{"caps.vtu", "caps.surfaces.vtu", "caps.container.vtu", "caps.csv", "caps.json", "rec.json"}));
 
   // CSV: the capsule layout, end points 2a apart (a = half-length = r for aspect ratio 0.5).
   const std::vector<std::string> lines = lines_of(read_bytes(dir.work() / "out/caps.csv"));

@@ -111,6 +111,23 @@ def test_write_refuses_a_side_file_that_is_the_scene(tmp_path):
     assert state(scene) == before and not (tmp_path / "p.vtu").exists()
 
 
+def test_a_vtu_output_has_the_container_beside_it_and_it_may_not_be_the_scene(tmp_path):
+    # Written beside every vtu output of a packing whose scene is known: the container's
+    # boundary, for ParaView (core/io/container_vtu.hpp; its geometry is tested in test_cli).
+    p = frontpack.pack(dict(BOX, stop={"particles": 5}))
+    p.write(tmp_path / "p.vtu")
+    assert sorted(f.name for f in tmp_path.iterdir()) == ["p.container.vtu", "p.vtu"]
+    assert (tmp_path / "p.container.vtu").read_bytes().startswith(b"<?xml")
+    p.write(tmp_path / "p.csv")
+    assert not (tmp_path / "p.container.csv").exists()
+    scene = write_scene(tmp_path, dict(BOX, stop={"particles": 5}), "q.container.vtu")
+    q = frontpack.pack(scene)
+    before = state(scene)
+    with pytest.raises(frontpack.OutputPathError, match=r"the side file of output '.*q.vtu'.* is the scene file"):
+        q.write(tmp_path / "q.vtu")
+    assert state(scene) == before and not (tmp_path / "q.vtu").exists()
+
+
 def test_write_refuses_a_path_it_cannot_write_and_writes_nothing(tmp_path):
     p = frontpack.pack(dict(BOX, stop={"particles": 5}))
     with pytest.raises(frontpack.OutputPathError, match="does not exist"):
