@@ -52,6 +52,7 @@
 #include "core/geometry/container.hpp"
 #include "core/io/scene.hpp"
 #include "core/sampling/rng.hpp"
+#include "front/closing_lattice.hpp"
 #include "front/container_too_small.hpp"
 #include "front/front_block.hpp"
 #include "front/front_parts.hpp"
@@ -82,7 +83,13 @@ class AdvancingFront {
     // the same density); shapes pay density for it (experiments/front-levers/RESULTS.md).
     probe_smallest_ = opt_.probe_smallest.value_or(Model::kProbeSmallestByDefault &&
                                                    model_.r_max() <= kProbeRatioLimit * model_.r_min());
-    may_wait_ = !Model::kTurns && kWaitRatio * model_.r_min() <= model_.r_max() && large_volume_share() < kMaxLargeShare;
+    const LargeShares large = large_shares();
+    may_wait_ = !Model::kTurns && kWaitRatio * model_.r_min() <= model_.r_max() && large.volume < kMaxLargeShare;
+    if constexpr (!Model::kTurns) {
+      if (!block && kWaitRatio * model_.r_min() <= model_.r_max() && large.count_share < kRareLargeCountShare &&
+          large.volume < kMaxLargeShare && large.smallest < std::numeric_limits<double>::infinity())
+        start_large_ahead(large.smallest, seed);
+    }
   }
 
   Result run(const ProgressFn& progress = {}) {
@@ -112,6 +119,7 @@ class AdvancingFront {
           next_progress = t + 0.5;
         }
       }
+      place_large_ahead(res);
       const int s0 = front_top();
       ++res.counters.front_picks;
       if (!try_place_around(s0, res)) {
@@ -119,7 +127,9 @@ class AdvancingFront {
         ++res.counters.front_removals;
       }
     }
-    res.counters.radii_unplaced = pool_.size();
+    res.counters.radii_unplaced = pool_.size() + large_pending_.size();
+    res.counters.radii_never_fit += large_pending_.size();
+    for (const Draft& d : large_pending_) res.never_fit_radii.push_back(radius(d));
     for (std::size_t k = 0; k < pool_.size(); ++k)
       if (waiting(k)) {
         ++res.counters.radii_never_fit;
@@ -148,9 +158,20 @@ class AdvancingFront {
              std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count() >= *stop_.time_limit_seconds;
   }
 
+  /// The next draft of the law. With a rare large class placed ahead (start_large_ahead) a large
+  /// draft is set aside for place_large_ahead, or, if one was placed before its turn, it is the
+  /// one that was (counted then): the law's next draft is drawn instead.
   Draft draw(Result& res) {
-    ++res.counters.radii_drawn;
-    return model_.draw(rng_);
+    for (;;) {
+      Draft d = model_.draw(rng_);
+      if (lattice_ && radius(d) >= large_threshold_ && large_drawn_ahead_ > 0) {
+        --large_drawn_ahead_;
+        continue;
+      }
+      ++res.counters.radii_drawn;
+      if (!lattice_ || radius(d) < large_threshold_) return d;
+      large_pending_.push_back(d);
+    }
   }
   /// A fresh draft at the end of the pool.
   void push_draw(Result& res) {
@@ -158,6 +179,10 @@ class AdvancingFront {
     misses_.push_back(0);
   }
   static double radius(const Draft& d) { return Model::radius(d); }
+  static double rD(const Draft& d) {
+    const double r = radius(d);
+    return D == 3 ? r * r * r : r * r;
+  }
 
   // ---- the front F ----
   bool front_empty() const {
@@ -204,7 +229,105 @@ class AdvancingFront {
     else list_.push_back(id);
   }
 
-  void add_particle(const Draft& d, const Vec<D>& c) { front_push(model_.add(d, c), c); }
+  void add_particle(const Draft& d, const Vec<D>& c) {
+    front_push(model_.add(d, c), c);
+    if (lattice_) {
+      lattice_->add_ball(c, radius(d), radius(d) < large_threshold_);
+      placed_rD_ += rD(d);
+    }
+  }
+
+  // ---- a rare large class, placed ahead of the front ----
+  /// Sand with some gravel (a law whose drafts kWaitRatio times its smallest radius or more are
+  /// under kRareLargeCountShare of them by count) is filled with its large particles placed
+  /// ahead of the front, at the rate at which the container closes to them. The front grows from
+  /// the seed point; where it comes within a large diameter of a wall, no large particle fits any
+  /// more, and that strip closes faster than the small ones fill it: 78 % of a box 5 gravel
+  /// diameters wide lies within a gravel diameter of a wall, and placed in their turn 62 of 104
+  /// gravel grains found no room (experiments/extremes, "A rare large class"). So a
+  /// ClosingLattice follows where a large centre still fits (c: the share of the container
+  /// closed to large centres) and where a small one does (f: the share filled). The filled part
+  /// should hold p_L N c / f large particles by now (p_L the law's share of large ones by count,
+  /// N the particles placed); while fewer are placed, one is drawn from the law's large class
+  /// before its turn and placed, and the next large draft of the law is skipped in return
+  /// (draw()). Each large particle, in its turn or before, is placed at the open lattice point
+  /// nearest the seed point (the front's own order), moved towards the seed point until it
+  /// touches a particle or a wall. In the bulk c / f stays near 1 and the large ones come in
+  /// their turn, at the front; the count of each class stays the law's (the size test checks it).
+  /// Spheres, the whole container (not a block of it), and laws whose large drafts hold under
+  /// kMaxLargeShare of the volume: where they hold nearly all of it (radii 100 times apart at
+  /// 1000 : 1) the small ones only fill their gaps; there a first cluster of small ones at the
+  /// seed point closed a box 3 large diameters wide to large centres at once, and the small ones
+  /// then filled it at the 1,700 per second of that size ratio (over 10 minutes; measured).
+  void start_large_ahead(double smallest_large, std::uint64_t seed) {
+    if constexpr (!Model::kTurns) {
+      large_rng_.reseed(seed ^ kLargeStreamSalt);
+      large_threshold_ = kWaitRatio * model_.r_min();
+      // The law's share of its volume in large drafts, w_L, from its share of them by count
+      // (exact) and the mean r^D of each class (samples of a fixed seed: the same for every run).
+      const double share = model_.share_at_least(large_threshold_);
+      Rng sample_rng(kShareSampleSeed);
+      double small_sum = 0, large_sum = 0;
+      int small_n = 0, large_n = 0;
+      while (small_n < kShareSamples || large_n < kLargeSamples) {
+        const double r = radius(model_.draw(sample_rng)), v = r * r * (D == 3 ? r : 1.0);
+        if (r < large_threshold_ && small_n < kShareSamples) small_sum += v, ++small_n;
+        if (r >= large_threshold_ && large_n < kLargeSamples) large_sum += v, ++large_n;
+        if (share == 1 && large_n == kLargeSamples) break;
+      }
+      large_mean_rD_ = large_sum / kLargeSamples;
+      const double small_mean = small_n ? small_sum / small_n : 0;
+      large_volume_share_ = share * large_mean_rD_ / (share * large_mean_rD_ + (1 - share) * small_mean);
+      lattice_.emplace(container_, kLatticeSpacing * smallest_large, smallest_large, model_.r_min(), kLatticePoints,
+                       [&](const Vec<D>& p) { return growth_key(p); });
+    }
+  }
+
+  /// Places the large drafts drawn, then those due by the shares closed (start_large_ahead).
+  void place_large_ahead(Result& res) {
+    if (!lattice_) return;
+    while (!large_pending_.empty()) {
+      if (!place_ahead(large_pending_.back(), res)) return;
+      large_pending_.pop_back();
+    }
+    const double filled = lattice_->closed_small_share();
+    if (!(filled > 0)) return;
+    // The large ones' r^D due: w_L of what the container will hold (placed / filled), times the
+    // share of their centres' room the small ones have closed.
+    const double due = large_volume_share_ * placed_rD_ / filled * lattice_->closed_large_share();
+    while (large_rD_ + large_mean_rD_ <= due && !count_or_fraction_reached(res)) {
+      Draft d = model_.draw(large_rng_);
+      while (radius(d) < large_threshold_) d = model_.draw(large_rng_);
+      if (!place_ahead(d, res)) return;
+      ++large_drawn_ahead_;
+      ++res.counters.radii_drawn;
+      ++res.counters.radii_drawn_ahead;
+    }
+  }
+
+  /// At the open lattice point nearest the seed point, moved towards the seed point until it
+  /// touches (bisection on its room, as in drop_onto). False when no point has room.
+  bool place_ahead(const Draft& d, Result& res) {
+    for (std::optional<Vec<D>> p; (p = lattice_->nearest_open_large());) {
+      if (model_.room(d, *p) >= 0) {
+        double lo = 0, hi = 1;  // hi: *p (room); lo: the seed point
+        for (int it = 0; it < 64; ++it) {
+          const double mid = 0.5 * (lo + hi);
+          (model_.room(d, seed_point_ + mid * (*p - seed_point_)) >= 0 ? hi : lo) = mid;
+        }
+        const Vec<D> x = seed_point_ + hi * (*p - seed_point_);
+        if (fits(d, x)) {
+          add_particle(d, x);
+          ++large_placed_;
+          large_rD_ += rD(d);
+          ++res.counters.radii_placed_ahead;
+          return true;
+        }
+      }
+      lattice_->close_nearest_open_large();  // a draft larger than the lattice's radius
+    }
+    return false;
+  }
 
   // ---- a block of a decomposed container ----
   /// Where the model's neighbour grid must hold centres: the container, or the block's box
@@ -430,15 +553,24 @@ class AdvancingFront {
 
   /// The share of the law's volume in drafts kWaitRatio times its smallest radius or more
   /// (estimated from a fixed sample: the same for every seed).
-  double large_volume_share() {
+  struct LargeShares {
+    double volume = 1;       // of the law's volume
+    double count_share = 1;  // of its drafts by count
+    double smallest = std::numeric_limits<double>::infinity();  // the smallest large draft sampled
+  };
+  LargeShares large_shares() {
     Rng sample_rng(kShareSampleSeed);
     double all = 0, large = 0;
+    LargeShares shares;
+    int large_count = 0;
     for (int s = 0; s < kShareSamples; ++s) {
       const double r = radius(model_.draw(sample_rng)), v = r * r * (D == 3 ? r : 1.0);
       all += v;
-      if (r >= kWaitRatio * model_.r_min()) large += v;
+      if (r >= kWaitRatio * model_.r_min()) large += v, ++large_count, shares.smallest = std::min(shares.smallest, r);
     }
-    return all > 0 ? large / all : 1.0;
+    shares.volume = all > 0 ? large / all : 1.0;
+    shares.count_share = double(large_count) / kShareSamples;
+    return shares;
   }
 
   /// Whether pool_[k] is waiting: set aside after kWaitAfter picks without room, with a fresh
@@ -936,6 +1068,15 @@ class AdvancingFront {
   // at 1000 : 1 and radii 10 times apart has half its volume in the gravel.
   static constexpr double kMaxLargeShare = 0.9;
   static constexpr int kShareSamples = 4096;
+  // A large class rarer than this by count is placed ahead of the front (start_large_ahead): sand
+  // with gravel at 1000 : 1 and a 99 : 1 mix are; a lognormal or uniform law 50 times wide is not
+  // (a quarter to nearly all of its drafts are 3 times its smallest radius or more).
+  static constexpr double kRareLargeCountShare = 0.05;
+  static constexpr int kLargeSamples = 256;  // large drafts sampled for their mean r^D
+  // start_large_ahead's lattice: spacing in the smallest large radius, points at most.
+  static constexpr double kLatticeSpacing = 0.25;
+  static constexpr double kLatticePoints = double(1 << 22);
+  static constexpr std::uint64_t kLargeStreamSalt = 0x6a09e667f3bcc909ULL;
   static constexpr std::uint64_t kShareSampleSeed = 0x5eed;
   // The roll's turn angles (radians): the first, the largest and the smallest tried.
   static constexpr double kRollAngle = 0.3, kMaxRollAngle = 1.0, kMinRollAngle = 1e-3;
@@ -959,6 +1100,16 @@ class AdvancingFront {
   std::vector<int> misses_;  // per pooled draft: picks at which it found no room (waiting())
   std::size_t waiting_count_ = 0;  // pooled drafts waiting
   bool may_wait_ = false;          // drafts may wait (the constructor: the law, the kind of particle)
+  // A rare large class placed ahead of the front (start_large_ahead; empty lattice_: not).
+  std::optional<ClosingLattice<D>> lattice_;
+  double large_threshold_ = std::numeric_limits<double>::infinity();  // large: radius at least this
+  double large_volume_share_ = 0;   // the law's share of its volume (sum of r^D) in large drafts
+  double large_mean_rD_ = 0;        // the mean r^D of a large draft
+  double placed_rD_ = 0, large_rD_ = 0;  // sums of r^D placed: every particle, the large ones
+  std::vector<Draft> large_pending_;  // large drafts drawn, not placed yet
+  std::size_t large_placed_ = 0;      // large particles placed
+  std::size_t large_drawn_ahead_ = 0;  // drawn before their turn, not yet skipped in return by draw()
+  Rng large_rng_;                      // the large drafts drawn before their turn
   std::vector<int> order_;
   std::vector<double> failed_radius_;  // per particle: smallest pooled radius that failed there
   std::vector<Neighbour> nb_;

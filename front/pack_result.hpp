@@ -30,6 +30,8 @@ struct FrontCounters {
   std::uint64_t radii_waited = 0;         ///< drafts set aside as waiting (no room at many s0 in a row)
   std::uint64_t radii_never_fit = 0;      ///< of radii_unplaced: waiting drafts that never found room
   std::uint64_t radii_dropped = 0;        ///< waiting drafts dropped onto the front (one contact)
+  std::uint64_t radii_placed_ahead = 0;   ///< a rare large class: placed ahead of the front
+  std::uint64_t radii_drawn_ahead = 0;    ///< of those, drawn before their turn (the law's next large draft skipped)
   std::uint64_t max_neighbours = 0;       ///< largest |V| seen (bounded by r_max/r_min, paper 002 Sect. 6)
   std::uint64_t voids_reopened = 0;       ///< voids found after F ran empty, growth resumed from their surroundings
   std::uint64_t voids_seeded = 0;         ///< voids found after F ran empty and given a new seed particle
@@ -67,6 +69,8 @@ struct FrontCounters {
       {"radii_waited", &FrontCounters::radii_waited},
       {"radii_never_fit", &FrontCounters::radii_never_fit},
       {"radii_dropped", &FrontCounters::radii_dropped},
+      {"radii_placed_ahead", &FrontCounters::radii_placed_ahead},
+      {"radii_drawn_ahead", &FrontCounters::radii_drawn_ahead},
       {"max_neighbours", &FrontCounters::max_neighbours},
       {"voids_reopened", &FrontCounters::voids_reopened},
       {"voids_seeded", &FrontCounters::voids_seeded},

@@ -63,6 +63,8 @@ class SphereModel {
   }
 
   Draft draw(Rng& rng) const { return dist_.sample(rng); }
+  /// The law's share of radii at least r, by count.
+  double share_at_least(double r) const { return 1.0 - dist_.cdf(std::nextafter(r, 0.0)); }
 
   // ---- a result's particles, for the blocks of a decomposed container (front/block_front.hpp) ----
   static std::size_t size(const Result& res) { return res.packing.size(); }

@@ -8,7 +8,11 @@ test and the exit code.
   FRONTPACK=build/cli/frontpack /usr/bin/python3 experiments/extremes/rare_large_class.py
 
 Seed 42 for every run, one thread, the default pool of 4. 'large' counts radii above half the
-law's largest; 'expected' is the law's share of them times the particles placed."""
+law's largest; 'expected' is the law's share of them times the particles placed. 'large centres
+K-S' is the largest sqrt(n) D of the large centres' coordinates against uniform over the box
+where a large centre fits (1.36: p = 0.05), a test of where they were put."""
+import math
+
 from pack_once import pack
 
 
@@ -22,6 +26,8 @@ CASES = [  # name, radius law, box side, largest radius, share of the large clas
     ("0.01 alone", discrete(0.01, None), 0.5, None, None),
     ("0.01 : 0.1 (ratio 10)", discrete(0.01, 0.1), 1.0, 0.1, 1 / 1001),
     ("0.01 alone", discrete(0.01, None), 1.0, None, None),
+    ("0.01 : 0.1 (ratio 10)", discrete(0.01, 0.1), 2.0, 0.1, 1 / 1001),
+    ("0.01 alone", discrete(0.01, None), 2.0, None, None),
     ("0.001 : 0.1 (ratio 100)", discrete(0.001, 0.1), 0.3, 0.1, 1 / 1001),
     ("0.001 : 0.1 (ratio 100)", discrete(0.001, 0.1), 0.6, 0.1, 1 / 1001),
     ("99 : 1 of [0.001, 0.0011] : [0.09, 0.1]",
@@ -34,21 +40,36 @@ CASES = [  # name, radius law, box side, largest radius, share of the large clas
 
 def run(law, side):
     return pack(f"dimension: 3\nseed: 42\ncontainer: {{type: box, min: [0,0,0], max: [{side},{side},{side}]}}\n"
-                f"particles: {{radius: {law}}}\n")
+                f"particles: {{radius: {law}}}\n", rows=True)
 
 
-print("| radii | box side | placed | large placed (expected) | waited / never found room | container VF | core VF | "
-      "radii test | exit | time (s) |")
-print("|---|---|---|---|---|---|---|---|---|---|")
+def uniformity(centres, lo, hi):
+    """The largest sqrt(n) D over the axes of the centres against uniform on [lo, hi]."""
+    worst = 0.0
+    for axis in range(3):
+        u = sorted((c[axis] - lo) / (hi - lo) for c in centres)
+        n = len(u)
+        if n == 0:
+            return float("nan")
+        d = max(max((i + 1) / n - x, x - i / n) for i, x in enumerate(u))
+        worst = max(worst, d * math.sqrt(n))
+    return worst
+
+
+print("| radii | box side | placed | large placed (expected) | waited / never found room | large centres K-S | "
+      "container VF | core VF | radii test | exit | time (s) |")
+print("|---|---|---|---|---|---|---|---|---|---|---|")
 for name, law, side, largest, share in CASES:
-    code, wall, rec, radii = run(law, side)
+    code, wall, rec, rows = run(law, side)
+    radii = [row[-1] for row in rows]
     m, c = rec["metrics"], rec["counters"]
     n = len(radii)
     test = rec["analysis"]["validation"].get("radii", {})
-    large = "-"
+    large, ks = "-", "-"
     if largest:
         big = sum(r > 0.5 * largest for r in radii)
         large = f"{big} ({n * share:.1f})" if share else str(big)
+        ks = f"{uniformity([row[1:4] for row in rows if row[-1] > 0.5 * largest], largest, side - largest):.2f}"
     waited = f"{c.get('radii_waited', '-')} / {c.get('radii_never_fit', '-')}"  # '-': a frontpack without them
-    print(f"| {name} | {side} | {n} | {large} | {waited} | {m['volume_fraction_container']:.3f} | "
+    print(f"| {name} | {side} | {n} | {large} | {waited} | {ks} | {m['volume_fraction_container']:.3f} | "
           f"{m['volume_fraction_core']:.3f} | p = {test.get('p', float('nan')):.2g} | {code} | {wall:.1f} |")

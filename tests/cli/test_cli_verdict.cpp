@@ -94,8 +94,9 @@ TEST(CliVerdictCrafted, OverlapAllowanceIsTolTimesTheSmallerRadius) {
 // stderr, in the summary and in the record, no file replaced. `validate` judges the file alone.
 TEST(CliVerdictRoom, GravelWithoutRoomIsIncompleteNotABug) {
   TempDir dir;
-  write_bytes(dir.work() / "s.yaml", "dimension: 3\nseed: 42\ncontainer: {type: box, min: [0, 0, 0], max: [0.5, 0.5, 0.5]}\n"
-                                     "particles: {radius: {distribution: discrete, values: [[0.01, 1000], [0.1, 1]]}}\n");
+  // Gravel centres fit only within 0.1 of the middle of this box, far fewer than the law asks.
+  write_bytes(dir.work() / "s.yaml", "dimension: 3\nseed: 42\ncontainer: {type: box, min: [0, 0, 0], max: [0.4, 0.4, 0.4]}\n"
+                                     "particles: {radius: {distribution: discrete, values: [[0.01, 300], [0.1, 1]]}}\n");
   write_bytes(dir.work() / "old.csv", "an earlier packing\n");
   const RunResult r = run_frontpack(dir, "pack s.yaml -o old.csv --record r.json");
   EXPECT_EQ(r.exit_code, 4) << r.out << r.err;

@@ -2,6 +2,10 @@
 // and micrometre radii. The tolerances stay relative: overlap <= 1e-9 r_min, inside to 1e-9 r.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 #include "core/metrics/radii_fit.hpp"
 #include "core/metrics/validate.hpp"
 #include "front_checks.hpp"
@@ -71,13 +75,12 @@ particles: {radius: {distribution: histogram, edges: [0.001, 0.0011, 0.09, 0.1],
   EXPECT_TRUE(v.ok) << v.summary();
 }
 
-TEST(FrontExtremes, RareLargeClassNeitherClogsThePoolNorStopsTheFront) {
+TEST(FrontExtremes, RareLargeClassInABoxTooSmallForItIsListedAsLeftOut) {
   // Sand with a grain of gravel per thousand: radii 0.01 and 0.1 at 1000 : 1 in a box 2.5 gravel
-  // diameters wide. The gravel drawn once the sand has grown around the middle finds no room;
-  // it used to fill the pool of 4 until the front stopped with the box a third full (container
-  // fraction 0.285, the edges empty). Now such drafts wait beside the pool, and the void search
-  // looks for room for the sand too: the box fills (sand alone reaches 0.554 in it), and the
-  // gravel left out is listed (the command line's verdict: incomplete, exit 4).
+  // diameters wide, where gravel centres fit only in the middle 0.3 of it. The gravel is placed
+  // ahead of the front while it has room; the box fills (sand alone reaches 0.554 in it), and the
+  // gravel left out is listed (the command line's verdict: incomplete, exit 4, when the placed
+  // radii fail the size test).
   const fp::Scene scene = scene_from_yaml(R"(
 dimension: 3
 seed: 42
@@ -88,12 +91,12 @@ particles: {radius: {distribution: discrete, values: [[0.01, 1000], [0.1, 1]]}}
   SCOPED_TRACE(std::to_string(res.packing.size()) + " particles");
   EXPECT_EQ(res.stop, fp::StopReason::FrontExhausted);
   expect_valid<3>(res.packing, box_distance<3>(Vec3::Zero(), Vec3::Constant(0.5)), 0.01, 0.1, "rare large class");
-  EXPECT_GT(volume_fraction<3>(res.packing, 0.125), 0.55);
+  EXPECT_GT(volume_fraction<3>(res.packing, 0.125), 0.58);
   std::size_t large = 0;
   for (const double r : res.packing.radii) large += r > 0.05 ? 1 : 0;
   EXPECT_GE(large, 1u);
-  // What waited and never fitted is counted and listed, gravel only, and the pool left little.
-  EXPECT_GT(res.counters.radii_waited, 0u);
+  EXPECT_EQ(res.counters.radii_placed_ahead, large);  // every large one is placed ahead
+  // What never fitted is counted and listed, gravel only, and the pool left little.
   ASSERT_EQ(res.never_fit_radii.size(), res.counters.radii_never_fit);
   for (const double r : res.never_fit_radii) EXPECT_EQ(r, 0.1);
   EXPECT_EQ(res.counters.radii_unplaced - res.counters.radii_never_fit, 4u);  // the pool of 4
@@ -102,6 +105,45 @@ particles: {radius: {distribution: discrete, values: [[0.01, 1000], [0.1, 1]]}}
   std::vector<double> all = res.packing.radii;
   all.insert(all.end(), res.never_fit_radii.begin(), res.never_fit_radii.end());
   EXPECT_GE(fp::radii_fit(all, *scene.radii).p, 0.001);
+}
+
+TEST(FrontExtremes, RareLargeClassFillsABoxFiveLargeDiametersWide) {
+  // The same law in a box 5 gravel diameters wide, 78 % of it within a gravel diameter of a wall.
+  // Placed in their turn, 62 of 104 gravel grains found no room once the sand had reached the
+  // walls (container fraction 0.631). Placed ahead of the front at the rate the box closes to
+  // them, every one fits, the counts follow the law, the box is denser than sand alone (0.573),
+  // and the gravel centres are spread over the whole room they have: each coordinate uniform on
+  // [0.1, 0.9] (Kolmogorov-Smirnov, sqrt(n) D below 1.95: p > 0.001).
+  const fp::Scene scene = scene_from_yaml(R"(
+dimension: 3
+seed: 7
+container: {type: box, min: [0, 0, 0], max: [1, 1, 1]}
+particles: {radius: {distribution: discrete, values: [[0.01, 1000], [0.1, 1]]}}
+)");
+  const auto res = fp::pack<3>(scene);
+  SCOPED_TRACE(std::to_string(res.packing.size()) + " particles");
+  EXPECT_EQ(res.stop, fp::StopReason::FrontExhausted);
+  expect_valid<3>(res.packing, box_distance<3>(Vec3::Zero(), Vec3::Constant(1.0)), 0.01, 0.1, "gravel in a box of 1");
+  EXPECT_GE(fp::radii_fit(res.packing.radii, *scene.radii).p, 0.001);
+  EXPECT_GT(volume_fraction<3>(res.packing, 1.0), 0.65);
+  std::vector<Vec3> gravel;
+  for (std::size_t i = 0; i < res.packing.size(); ++i)
+    if (res.packing.radii[i] > 0.05) gravel.push_back(res.packing.centers[i]);
+  ASSERT_GE(gravel.size(), 50u);
+  // The gravel is placed at the rate the box closes to it, not in the law's own turns: when the
+  // law happens to draw more of it than that (99 against 84 expected, this seed), the excess
+  // drawn after the box has closed finds no room and is listed. Placed in their turn, 62 of 104.
+  EXPECT_LE(res.counters.radii_never_fit, gravel.size() / 3);
+  EXPECT_EQ(res.counters.radii_placed_ahead, gravel.size());
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<double> u;
+    for (const Vec3& c : gravel) u.push_back((c[axis] - 0.1) / 0.8);
+    std::sort(u.begin(), u.end());
+    double d = 0;
+    for (std::size_t i = 0; i < u.size(); ++i)
+      d = std::max({d, double(i + 1) / u.size() - u[i], u[i] - double(i) / u.size()});
+    EXPECT_LT(d * std::sqrt(double(u.size())), 1.95) << "axis " << axis;
+  }
 }
 
 TEST(FrontExtremes, CoordinatesOffsetByOneMillion3D) {
