@@ -101,14 +101,19 @@ def test_write_refuses_the_mesh_the_container_was_read_from(tmp_path):
     assert state(mesh) == before
 
 
-def test_write_refuses_a_side_file_that_is_the_scene(tmp_path):
-    # A packing of shapes written as vtu writes <name>.surfaces.vtu beside it.
-    scene = write_scene(tmp_path, dict(ELLIPSES, stop={"particles": 5}), "p.surfaces.vtu")
+def expect_side_file_refused(tmp_path, scene_dict, side, output):
+    """A scene saved as `side`, a side file of `output`: writing `output` is refused, nothing changes."""
+    scene = write_scene(tmp_path, dict(scene_dict, stop={"particles": 5}), side)
     p = frontpack.pack(scene)
     before = state(scene)
-    with pytest.raises(frontpack.OutputPathError, match=r"the side file of output '.*p.vtu'.* is the scene file"):
-        p.write(tmp_path / "p.vtu")
-    assert state(scene) == before and not (tmp_path / "p.vtu").exists()
+    with pytest.raises(frontpack.OutputPathError, match=rf"the side file of output '.*{output}'.* is the scene file"):
+        p.write(tmp_path / output)
+    assert state(scene) == before and not (tmp_path / output).exists()
+
+
+def test_write_refuses_a_side_file_that_is_the_scene(tmp_path):
+    # A packing of shapes written as vtu writes <name>.surfaces.vtu beside it.
+    expect_side_file_refused(tmp_path, ELLIPSES, "p.surfaces.vtu", "p.vtu")
 
 
 def test_a_vtu_output_has_the_container_beside_it_and_it_may_not_be_the_scene(tmp_path):
@@ -120,12 +125,7 @@ def test_a_vtu_output_has_the_container_beside_it_and_it_may_not_be_the_scene(tm
     assert (tmp_path / "p.container.vtu").read_bytes().startswith(b"<?xml")
     p.write(tmp_path / "p.csv")
     assert not (tmp_path / "p.container.csv").exists()
-    scene = write_scene(tmp_path, dict(BOX, stop={"particles": 5}), "q.container.vtu")
-    q = frontpack.pack(scene)
-    before = state(scene)
-    with pytest.raises(frontpack.OutputPathError, match=r"the side file of output '.*q.vtu'.* is the scene file"):
-        q.write(tmp_path / "q.vtu")
-    assert state(scene) == before and not (tmp_path / "q.vtu").exists()
+    expect_side_file_refused(tmp_path, BOX, "q.container.vtu", "q.vtu")
 
 
 def test_write_refuses_a_path_it_cannot_write_and_writes_nothing(tmp_path):
