@@ -36,13 +36,15 @@ struct Kind {
   std::function<std::string(double o, double s)> container;
   std::function<SignedDistance<D>(double o, double s)> distance;
   double r_min, r_max;  // at scale 1
+  std::function<std::string(double s)> law = {};  // the radius law at scale s (none: uniform [r_min, r_max])
 };
 
 template <int D>
 std::string scene_text(const Kind<D>& k, double o, double s) {
-  return "dimension: " + std::to_string(D) + "\nseed: 42\ncontainer: " + k.container(o, s) +
-         "\nparticles: {radius: {distribution: uniform, min: " + num(k.r_min * s) + ", max: " + num(k.r_max * s) +
-         "}}\n";
+  const std::string law = k.law ? k.law(s)
+                                : "{distribution: uniform, min: " + num(k.r_min * s) + ", max: " + num(k.r_max * s) + "}";
+  return "dimension: " + std::to_string(D) + "\nseed: 42\ncontainer: " + k.container(o, s) + "\nparticles: {radius: " +
+         law + "}\n";
 }
 
 template <int D>
@@ -84,6 +86,24 @@ TEST(FarAndScaled, Box3D) {
                                  return box_distance<3>(Vec3::Constant(o), Vec3::Constant(o + 0.5 * s));
                                },
                                0.01, 0.02});
+}
+
+// A rare large class (radii 4 times apart at 100 : 1) is placed ahead of the front on a lattice
+// of the container's local frame: the same packing far away and at every scale too.
+TEST(FarAndScaled, RareLargeClass3D) {
+  expect_same_as_reference<3>({"box, rare large class",
+                               [](double o, double s) {
+                                 return "{type: box, min: " + vec({o, o, o}) + ", max: " +
+                                        vec({o + 0.5 * s, o + 0.5 * s, o + 0.5 * s}) + "}";
+                               },
+                               [](double o, double s) {
+                                 return box_distance<3>(Vec3::Constant(o), Vec3::Constant(o + 0.5 * s));
+                               },
+                               0.015625, 0.0625,
+                               [](double s) {
+                                 return "{distribution: discrete, values: [[" + num(0.015625 * s) + ", 100], [" +
+                                        num(0.0625 * s) + ", 1]]}";
+                               }});
 }
 
 TEST(FarAndScaled, Cylinder3D) {
