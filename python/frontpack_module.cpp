@@ -384,8 +384,10 @@ PYBIND11_MODULE(frontpack, m) {
                              "the analysis and packer lines of the command line's summary")
       .def_property_readonly("scene_path", [](const PyPacking& p) { return p.in().scene->source_path; })
       .def("write", &write_file, py::arg("path"), py::arg("format") = "",
-           "writes the packing (vtu, yade, lammps, csv, json; default: from the extension), all or nothing; refuses "
-           "(OutputPathError, a ValueError) a path that is its scene or a file the scene reads")
+           "writes the packing (vtu, yade, lammps, csv, json; default: from the extension) with its side files "
+           "(vtu: <stem>.container.vtu, the container's boundary, and for shapes <stem>.surfaces.vtu; lammps of "
+           "clusters: <stem>.multisphere.txt), all or nothing; refuses (OutputPathError, a ValueError) a path "
+           "that is its scene or a file the scene reads")
       .def("__repr__", [](const PyPacking& p) {
         return "<frontpack.Packing: " + std::to_string(p.size()) + (p.in().shapes ? " shapes" : " spheres") + ", " +
                std::to_string(p.in().dimension) + "D, scene " + p.in().scene->source_path +
