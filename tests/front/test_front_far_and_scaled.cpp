@@ -11,6 +11,7 @@
 #include <fstream>
 #include <functional>
 #include <string>
+#include <utility>
 
 #include "front_checks.hpp"
 
@@ -76,34 +77,24 @@ void expect_same_as_reference(const Kind<D>& k) {
   }
 }
 
-TEST(FarAndScaled, Box3D) {
-  expect_same_as_reference<3>({"box",
-                               [](double o, double s) {
-                                 return "{type: box, min: " + vec({o, o, o}) + ", max: " +
-                                        vec({o + 0.5 * s, o + 0.5 * s, o + 0.5 * s}) + "}";
-                               },
-                               [](double o, double s) {
-                                 return box_distance<3>(Vec3::Constant(o), Vec3::Constant(o + 0.5 * s));
-                               },
-                               0.01, 0.02});
+/// A cube of side 0.5 s at (o, o, o).
+Kind<3> cube(const std::string& name, double r_min, double r_max, std::function<std::string(double s)> law = {}) {
+  return {name,
+          [](double o, double s) {
+            return "{type: box, min: " + vec({o, o, o}) + ", max: " + vec({o + 0.5 * s, o + 0.5 * s, o + 0.5 * s}) + "}";
+          },
+          [](double o, double s) { return box_distance<3>(Vec3::Constant(o), Vec3::Constant(o + 0.5 * s)); },
+          r_min, r_max, std::move(law)};
 }
+
+TEST(FarAndScaled, Box3D) { expect_same_as_reference<3>(cube("box", 0.01, 0.02)); }
 
 // A rare large class (radii 4 times apart at 100 : 1) is placed ahead of the front on a lattice
 // of the container's local frame: the same packing far away and at every scale too.
 TEST(FarAndScaled, RareLargeClass3D) {
-  expect_same_as_reference<3>({"box, rare large class",
-                               [](double o, double s) {
-                                 return "{type: box, min: " + vec({o, o, o}) + ", max: " +
-                                        vec({o + 0.5 * s, o + 0.5 * s, o + 0.5 * s}) + "}";
-                               },
-                               [](double o, double s) {
-                                 return box_distance<3>(Vec3::Constant(o), Vec3::Constant(o + 0.5 * s));
-                               },
-                               0.015625, 0.0625,
-                               [](double s) {
-                                 return "{distribution: discrete, values: [[" + num(0.015625 * s) + ", 100], [" +
-                                        num(0.0625 * s) + ", 1]]}";
-                               }});
+  expect_same_as_reference<3>(cube("box, rare large class", 0.015625, 0.0625, [](double s) {
+    return "{distribution: discrete, values: [[" + num(0.015625 * s) + ", 100], [" + num(0.0625 * s) + ", 1]]}";
+  }));
 }
 
 TEST(FarAndScaled, Cylinder3D) {
