@@ -51,13 +51,6 @@ Boundary box_faces(const Vec3& lo, const Vec3& hi) {
   return b;
 }
 
-/// Two unit vectors completing `axis` (unit) to an orthonormal frame.
-std::array<Vec3, 2> across(const Vec3& axis) {
-  const Vec3 helper = std::abs(axis.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-  const Vec3 e1 = axis.cross(helper).normalized();
-  return {e1, axis.cross(e1)};
-}
-
 Boundary sphere_surface(const Vec3& centre, double radius) {
   Boundary b;
   const int around = kContainerSegments, rings = kContainerSegments / 2;
@@ -82,7 +75,7 @@ Boundary sphere_surface(const Vec3& centre, double radius) {
 Boundary cylinder_surface(const CylinderContainer& c) {
   Boundary b;
   const int around = kContainerSegments;
-  const auto [e1, e2] = across(c.axis());
+  const Vec3 e1 = c.axis().unitOrthogonal(), e2 = c.axis().cross(e1);  // e1 x e2 = axis
   const Vec3 top = c.base_center() + c.height() * c.axis();
   for (const Vec3& cap : {c.base_center(), top})
     for (int k = 0; k < around; ++k) {
