@@ -164,12 +164,13 @@ class AdvancingFront {
   Draft draw(Result& res) {
     for (;;) {
       Draft d = model_.draw(rng_);
-      if (lattice_ && radius(d) >= large_threshold_ && large_drawn_ahead_ > 0) {
+      const bool large = lattice_ && radius(d) >= large_threshold_;
+      if (large && large_drawn_ahead_ > 0) {
         --large_drawn_ahead_;
         continue;
       }
       ++res.counters.radii_drawn;
-      if (!lattice_ || radius(d) < large_threshold_) return d;
+      if (!large) return d;
       large_pending_.push_back(d);
     }
   }
