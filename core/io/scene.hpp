@@ -257,12 +257,13 @@ struct ShapeParameters {
 };
 
 
-/// One particle template: a shape family, its parameters, a size distribution on a named
-/// dimension and an orientation distribution. `fraction` weights templates by number.
 /// What a template's `fraction` is a share of: the particles' number, or their volume (mass:
 /// one material for every template, so the same shares).
 enum class FractionBasis { Number, Volume };
 
+/// One particle template: a shape family, its parameters, a size distribution on a named
+/// dimension and an orientation distribution. `fraction` weights templates, by number or by
+/// volume (shapes/template_fractions.hpp converts it to shares by number).
 struct ParticleTemplateSpec {
   std::string family;                                  ///< "sphere", "spherocylinder", "polyhedron", ...
   ShapeParameters parameters;
