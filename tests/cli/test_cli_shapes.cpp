@@ -236,12 +236,6 @@ TEST(CliShapesRefused, FamilyMissingInTwoD) {
                        4, "particles[0].shape", "cylinder");
 }
 
-}  // namespace
-}  // namespace fptest
-
-namespace fptest {
-namespace {
-
 // `fraction: {volume: ...}`: spheres of radii 0.1 and 0.2 half the solid each, so 8 small ones
 // for a large one by number; the packing validates (its mix test against those number shares)
 // and its solid is shared half and half within sampling.
