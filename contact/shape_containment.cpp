@@ -5,6 +5,7 @@
 #include <memory>
 #include <limits>
 
+#include "core/geometry/bed_region.hpp"
 #include "core/geometry/box_container.hpp"
 #include "core/geometry/mesh_container.hpp"
 #include "core/geometry/polygon_container.hpp"
@@ -16,9 +17,15 @@ namespace fp {
 template <int D>
 ShapeContainment<D>::ShapeContainment(const Container<D>& container, const NarrowPhase<D>& narrow_phase)
     : container_(container), np_(narrow_phase) {
-  planar_convex_ = dynamic_cast<const BoxContainer<D>*>(&container) != nullptr;
+  // A bed: the facets are its container's. A flat surface is a wall plane; a free one is not
+  // among the walls, so the hull balls decide against the signed distance (which has the plane).
+  const Container<D>* walled = &container;
+  bool walls_bound_it = true;
+  if (const auto* bed = dynamic_cast<const BedRegion<D>*>(&container))
+    walled = &bed->base(), walls_bound_it = bed->surface() == BedSurface::Flat;
+  planar_convex_ = dynamic_cast<const BoxContainer<D>*>(walled) != nullptr && walls_bound_it;
   if constexpr (D == 3) {
-    if (const auto* mesh = dynamic_cast<const MeshContainer*>(&container))  // any mesh may be non-convex
+    if (const auto* mesh = dynamic_cast<const MeshContainer*>(walled))  // any mesh may be non-convex
       for (const auto& t : mesh->triangles()) {
         const std::array<Vec3, 3> v = {mesh->vertices()[static_cast<std::size_t>(t[0])],
                                        mesh->vertices()[static_cast<std::size_t>(t[1])],
@@ -30,12 +37,12 @@ ShapeContainment<D>::ShapeContainment(const Container<D>& container, const Narro
         facets_.push_back(std::move(f));
       }
   } else {
-    if (const auto* poly = dynamic_cast<const PolygonContainer*>(&container)) {
+    if (const auto* poly = dynamic_cast<const PolygonContainer*>(walled)) {
       const auto& v = poly->vertices();
       const int n = static_cast<int>(v.size());
       bool convex = true;
       for (int i = 0; i < n; ++i) convex &= !poly->is_reflex(i);
-      planar_convex_ = convex;
+      planar_convex_ = convex && walls_bound_it;
       if (!convex)
         for (int i = 0; i < n; ++i) {  // an edge is a spherocylinder of radius 0
           const Vec2 a = v[static_cast<std::size_t>(i)], b = v[static_cast<std::size_t>((i + 1) % n)];

@@ -124,6 +124,20 @@ std::string analysis_json(const PackingAnalysis& a, bool include_timings) {
     wall_vf.push_back(a.wall_profile.vf[k].value);
     wall_error.push_back(a.wall_profile.vf[k].std_error);
   }
+  if (a.bed.computed()) {
+    std::vector<double> heights, vf, error;
+    for (std::size_t k = 0; k < a.bed.vf.size(); ++k) {
+      heights.push_back(a.bed.middle(k));
+      vf.push_back(a.bed.vf[k].value);
+      error.push_back(a.bed.vf[k].std_error);
+    }
+    Json bed{{"height", a.bed.height}, {"width", a.bed.width}, {"slab_middle", heights}, {"vf", vf}, {"std_error", error},
+             {"bulk", a.bed.bulk.value}, {"top_layer", a.bed.top_layer.value}, {"half_bulk_height", a.bed.half_bulk_height}};
+    if (a.bed.surface.columns > 0)
+      bed["surface"] = Json{{"columns", a.bed.surface.columns}, {"mean", a.bed.surface.mean}, {"sd", a.bed.surface.std_dev},
+                            {"min", a.bed.surface.min}, {"max", a.bed.surface.max}};
+    j["volume_fraction"]["bed_profile"] = bed;
+  }
   j["volume_fraction"]["wall_profile"] =
       Json{{"width", a.wall_profile.width}, {"distance", wall_distance}, {"vf", wall_vf}, {"std_error", wall_error},
            {"layer", a.wall_profile.layer.value}, {"layer_std_error", a.wall_profile.layer.std_error}};

@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 
 #include "core/geometry/ball_container.hpp"
+#include "core/geometry/bed_region.hpp"
 #include "core/geometry/box_container.hpp"
 #include "core/geometry/cylinder_container.hpp"
 #include "core/geometry/mesh_container.hpp"
@@ -93,6 +94,21 @@ Boundary cylinder_surface(const CylinderContainer& c) {
 }
 
 Boundary boundary_of(const Container<3>& c) {
+  if (const auto* bed = dynamic_cast<const BedRegion<3>*>(&c)) {  // the walls below the level; open above, over the particles
+    const Boundary whole = boundary_of(bed->base());
+    Boundary b;
+    for (const auto& t : whole.triangles) {
+      const std::vector<Vec3> cut = clip_below<3>({whole.points[static_cast<std::size_t>(t[0])], whole.points[static_cast<std::size_t>(t[1])],
+                                                   whole.points[static_cast<std::size_t>(t[2])]},
+                                                  bed->up(), bed->level());
+      if (cut.size() < 3) continue;
+      const std::int64_t first = add(b, cut[0]);
+      for (std::size_t k = 1; k < cut.size(); ++k) add(b, cut[k]);
+      for (std::size_t k = 1; k + 1 < cut.size(); ++k)
+        b.triangles.push_back({first, first + static_cast<std::int64_t>(k), first + static_cast<std::int64_t>(k + 1)});
+    }
+    return b;
+  }
   if (const auto* box = dynamic_cast<const BoxContainer<3>*>(&c)) return box_faces(box->lo(), box->hi());
   if (const auto* ball = dynamic_cast<const BallContainer<3>*>(&c)) return sphere_surface(ball->center(), ball->radius());
   if (const auto* cyl = dynamic_cast<const CylinderContainer*>(&c)) return cylinder_surface(*cyl);
@@ -108,6 +124,12 @@ Boundary boundary_of(const Container<3>& c) {
 Boundary boundary_of(const Container<2>& c) {
   Boundary b;
   const auto in_plane = [&](const Vec2& p) { add(b, Vec3(p.x(), p.y(), 0)); };
+  if (const auto* bed = dynamic_cast<const BedRegion<2>*>(&c)) {  // the outline closed by the level's line
+    std::vector<Vec2> whole;
+    for (const Vec3& p : boundary_of(bed->base()).points) whole.emplace_back(p.x(), p.y());
+    for (const Vec2& p : clip_below<2>(whole, bed->up(), bed->level())) in_plane(p);
+    return b;
+  }
   if (const auto* box = dynamic_cast<const BoxContainer<2>*>(&c)) {
     const Vec2 lo = box->lo(), hi = box->hi();
     for (const Vec2& p : {lo, Vec2(hi.x(), lo.y()), hi, Vec2(lo.x(), hi.y())}) in_plane(p);

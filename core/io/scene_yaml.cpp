@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/geometry/ball_container.hpp"
+#include "core/geometry/bed_region.hpp"
 #include "core/geometry/box_container.hpp"
 #include "core/geometry/cylinder_container.hpp"
 #include "core/geometry/local_frame.hpp"
@@ -82,16 +83,34 @@ std::string dim_text(int d) { return std::to_string(d) + "D, from 'dimension'"; 
 /// Containers wider than this many smallest radii get their frame at the seed point (parse_body).
 constexpr double kFarFrameExtent = 524288.0;  // 2^19: then |local| <= 2^18 r_min keeps 1e-10 r_min
 
-const Keys kContainerKeys = {"type", "min", "max", "center", "radius", "base", "axis", "height", "vertices", "file", "scale"};
+const Keys kContainerKeys = {"type", "min", "max", "center", "radius", "base", "axis", "height", "vertices", "file", "scale", "bed"};
 const Keys kContainerTypes3 = {"box", "sphere", "cylinder", "mesh"};
 const Keys kContainerTypes2 = {"rectangle", "disk", "polygon"};
 
 Keys container_keys(const std::string& type) {
-  if (type == "box" || type == "rectangle") return {"type", "min", "max"};
-  if (type == "sphere" || type == "disk") return {"type", "center", "radius"};
-  if (type == "cylinder") return {"type", "base", "axis", "radius", "height"};
-  if (type == "polygon") return {"type", "vertices"};
-  return {"type", "file", "scale"};  // mesh
+  if (type == "box" || type == "rectangle") return {"type", "min", "max", "bed"};
+  if (type == "sphere" || type == "disk") return {"type", "center", "radius", "bed"};
+  if (type == "cylinder") return {"type", "base", "axis", "radius", "height", "bed"};
+  if (type == "polygon") return {"type", "vertices", "bed"};
+  return {"type", "file", "scale", "bed"};  // mesh
+}
+
+/// container.bed: the container filled from its floor up to a height (core/geometry/bed_region.hpp).
+template <int D>
+ContainerPtr<D> parse_bed(const Value& v, ContainerPtr<D> container) {
+  const Map m = v.map();
+  m.check_known({"height", "up", "surface"});
+  const double height = m.get("height", "the fill height above the container's lowest point along 'up'").positive();
+  Vec<D> up = Vec<D>::Zero();
+  up[D - 1] = 1.0;
+  if (auto u = m.find("up")) {
+    up = u->vec<D>(dim_text(D));
+    if (!up.allFinite() || up.norm() == 0.0) u->fail("must be a non-zero vector (the direction from the floor to the surface)");
+  }
+  BedSurface surface = BedSurface::Free;
+  if (auto s = m.find("surface"))
+    surface = s->choice({"free", "flat"}) == "flat" ? BedSurface::Flat : BedSurface::Free;
+  return construct(m, [&] { return std::make_shared<const BedRegion<D>>(std::move(container), up, height, surface); });
 }
 
 template <int D>
@@ -227,6 +246,7 @@ void check_length(const Value& where, const std::string& what, double length, in
 template <int D>
 ContainerPtr<D> parse_container(const Value& v, const Context& ctx, const std::optional<Vec<D>>& origin = std::nullopt) {
   ContainerPtr<D> container = parse_container_of_its_type<D>(v, ctx, origin);
+  if (auto bed = v.map().find("bed")) container = parse_bed<D>(*bed, std::move(container));
   check_length(v, "the container's extent", container->bounds().size().maxCoeff(), D);
   // Within the length bounds the volume is finite; this guards a container whose measure is
   // computed otherwise (a mesh's signed volume): every volume fraction would be 0 and a
@@ -443,6 +463,9 @@ void parse_packer(const Value& v, const Container<D>& container, bool shapes, Pa
       x->fail("the tetrahedral-mesh packer (paper 000) packs spheres in 3D: it needs dimension: 3 and 'particles: {radius: ...}'");
     if (p.method == "stacking" && shapes)
       x->fail("the graded stacking (paper 003) packs spheres (disks): it needs 'particles: {radius: ...}'");
+    if (p.method != "front" && dynamic_cast<const BedRegion<D>*>(&container))
+      x->fail("a bed (container.bed) is filled by the advancing front, 'method: front'; the " + p.method +
+              " packer fills a whole container");
   }
   const std::pair<const char*, int StackingParameters::*> stacking_keys[] = {
       {"random_tries", &StackingParameters::random_tries},   {"near_tries", &StackingParameters::near_tries},

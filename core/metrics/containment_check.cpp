@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include "core/geometry/ball_container.hpp"
+#include "core/geometry/bed_region.hpp"
 #include "core/geometry/box_container.hpp"
 #include "core/geometry/cylinder_container.hpp"
 #include "core/geometry/mesh_container.hpp"
@@ -91,7 +92,29 @@ struct MeshKind final : KindBase<3> {
 };
 
 template <int D>
+std::unique_ptr<const KindBase<D>> make_kind(const Container<D>& c);
+
+// A bed: its container's check, cut by the plane of its level (the larger signed distance:
+// exact inside, where the check decides).
+template <int D>
+struct BedKind final : KindBase<D> {
+  std::unique_ptr<const KindBase<D>> base;
+  Vec<D> up;
+  double level = 0.0;
+  double signed_distance(const Vec<D>& p, double reach) const override {
+    return std::max(base->signed_distance(p, reach), up.dot(p) - level);
+  }
+};
+
+template <int D>
 std::unique_ptr<const KindBase<D>> make_kind(const Container<D>& c) {
+  if (const auto* bed = dynamic_cast<const BedRegion<D>*>(&c)) {
+    auto k = std::make_unique<BedKind<D>>();
+    k->base = make_kind<D>(bed->base());
+    k->up = bed->up();
+    k->level = bed->level();
+    return k;
+  }
   if (const auto* box = dynamic_cast<const BoxContainer<D>*>(&c)) {
     auto k = std::make_unique<BoxKind<D>>();
     k->lo = box->lo();

@@ -72,6 +72,29 @@ std::string PackingAnalysis::summary() const {
     line("VF wall layers       %.4f within 2 r_max; shells of %.4g from the wall: %s", wall_profile.layer.value,
          wall_profile.width, shells.c_str());
   }
+  if (bed.computed()) {
+    // The first and last four slabs: the floor's layers and the surface's.
+    std::string slabs;
+    for (std::size_t k = 0; k < bed.vf.size(); ++k) {
+      if (k == 4 && bed.vf.size() > 8) {
+        slabs += " ...";
+        k = bed.vf.size() - 4;
+      }
+      std::snprintf(buf, sizeof buf, "%s%.3f", slabs.empty() ? "" : " ", bed.vf[k].value);
+      slabs += buf;
+    }
+    line("bed profile          height %.6g; slabs of %.4g from the floor up: %s", bed.height, bed.width, slabs.c_str());
+    if (std::isfinite(bed.bulk.value))
+      line("bed bulk / top       %.4f from 2 r_max over the floor to 2 r_max under the level; %.4f in its last 2 r_max; "
+           "half the bulk at height %.6g",
+           bed.bulk.value, bed.top_layer.value, bed.half_bulk_height);
+    else
+      line("bed bulk / top       none: the bed is not 4 r_max high; %.4f in its last 2 r_max", bed.top_layer.value);
+    if (bed.surface.columns > 0)
+      line("bed surface          highest tops over %llu columns of 4 r_max: mean %.6g, sd %.3g, range [%.6g, %.6g]",
+           static_cast<unsigned long long>(bed.surface.columns), bed.surface.mean, bed.surface.std_dev, bed.surface.min,
+           bed.surface.max);
+  }
   if (vf_cells.computed() && vf_cells.cells < 2)
     line("VF cells             %.4f in the one cell of %g <d> (edge %.6g) that fits 2 r_max inside: no spread from one cell",
          vf_cells.mean, vf_cells.diameters, vf_cells.edge);
@@ -229,6 +252,8 @@ PackingAnalysis analyze_packing(const Packing<D>& packing, const Container<D>* c
     a.vf_container = vf_region(packing, *container, 0.0, options.qmc);
     a.vf_core = vf_region(packing, *container, 2.0 * a.r_max, options.qmc);
     if (a.r_max > 0.0) a.wall_profile = wall_profile<D>(packing, *container, 2.0 * a.r_max / kWallShells, kWallShells, options.qmc);
+    if (const auto* bed = dynamic_cast<const BedRegion<D>*>(container); bed && a.r_max > 0.0)
+      a.bed = bed_profile<D>(packing, *bed, a.r_max);
   });
   steps.emplace_back("cells", [&] {
     a.vf_cells = cell_volume_fraction_auto(packing, *container, a.r_mean, a.r_max);

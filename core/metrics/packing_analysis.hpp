@@ -23,6 +23,7 @@
 
 #include "core/geometry/container.hpp"
 #include "core/geometry/packing.hpp"
+#include "core/metrics/bed_profile.hpp"
 #include "core/metrics/contact_normals.hpp"
 #include "core/metrics/contact_stats.hpp"
 #include "core/metrics/cell_volume_fraction.hpp"
@@ -76,6 +77,7 @@ struct PackingAnalysis {
   RegionVolumeFraction vf_core;          ///< container shrunk by 2 r_max
   CellVolumeFraction vf_cells;           ///< cells of 8 mean diameters (fewer if too few fit), 2 r_max inside
   WallProfile wall_profile;              ///< shells of r_max / 4 from the boundary out to the core (2 r_max)
+  BedProfile bed;                        ///< a bed (container.bed): the solid fraction against the height
 
   // Contacts.
   ContactStats coordination;             ///< z, z with walls, histogram, rattlers, max overlap (all pairs)

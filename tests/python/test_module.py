@@ -94,6 +94,23 @@ def test_analyze_and_validate_are_the_commands(box_run):
     assert not w["ok"] and w["outside_count"] > len(p) // 3 and "FAILED" in w["line"]
 
 
+def test_a_bed_is_packed_and_profiled_as_on_the_command_line(tmp_path):
+    bed = dict(BOX, container={"type": "cylinder", "base": [0, 0, 0], "radius": 0.3, "height": 1,
+                               "bed": {"height": 0.25, "surface": "free"}})
+    scene = write_scene(tmp_path, bed)
+    r = cli("pack", scene, "-o", "cli.csv", "-q", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    p = frontpack.pack(bed)
+    expected = read_csv(tmp_path / "cli.csv")
+    assert np.array_equal(p.centers, expected[:, 1:4]) and np.array_equal(p.radii, expected[:, 4])
+    assert p.complete and p.valid
+    assert (p.centers[:, 2] + p.radii).max() <= 0.25
+    profile = p.analysis["volume_fraction"]["bed_profile"]
+    assert profile["height"] == 0.25 and len(profile["vf"]) == len(profile["slab_middle"]) > 20
+    assert 0.5 < profile["bulk"] < 0.7 and 0.25 - 0.04 <= profile["half_bulk_height"] <= 0.25
+    assert profile["surface"]["max"] <= 0.25 and profile["surface"]["columns"] > 10
+
+
 def test_arrays_are_read_only_views_that_keep_the_packing(box_run):
     _, _, p = box_run
     radii = p.radii
