@@ -16,6 +16,7 @@
 #include "cli/pack_api.hpp"
 #include "cli/packing_input.hpp"
 #include "contact/shape_analysis.hpp"
+#include "contact/shape_sections.hpp"
 #include "contact/shape_validation.hpp"
 #include "core/io/analysis_json.hpp"
 #include "core/io/atomic_file.hpp"
@@ -58,27 +59,39 @@ const char* const kPlotFiles[] = {"vf_curve.png", "coordination.png", "radii.png
 /// And the sections of a packing of spheres: 3D the planes normal to x, y, z through the
 /// container's centre; 2D the packing's own plane (section_xy.png).
 const char* const kSectionFiles[] = {"section_yz.png", "section_xz.png", "section_xy.png"};
+/// And the profiles: the wall layers (every packing with a size), the bed's (a bed).
+const char* const kProfileFiles[] = {"wall_profile.png", "bed_profile.png"};
 
 /// A section's name in its file and the CSV: the plane's two axes.
 std::string plane_name(const PackingSection& s) { return std::string(1, "xyz"[s.u_axis]) + "xyz"[s.v_axis]; }
 
-/// The sections as the plot script reads them: disks (plane,u,v,radius,size), then the
-/// container's outline (plane,u0,v0,u1,v1) with the plane's normal and offset in a header line.
-std::pair<std::string, std::string> sections_csv(const std::vector<PackingSection>& sections) {
-  std::ostringstream disks, outline;
-  disks.precision(17);
-  outline.precision(17);
+/// The sections as the plot script reads them: disks (plane,normal,offset,u,v,radius,size: a
+/// plane that cuts none has one row without a disk), the container's outline
+/// (plane,u0,v0,u1,v1), and the other shapes' loops (plane,particle,loop,size,template,u,v: a
+/// loop's points in order).
+struct SectionsCsv {
+  std::string disks, outline, polygons;
+};
+SectionsCsv sections_csv(const std::vector<PackingSection>& sections) {
+  std::ostringstream disks, outline, polygons;
+  for (std::ostringstream* o : {&disks, &outline, &polygons}) o->precision(17);
   disks << "plane,normal,offset,u,v,radius,size\n";
   outline << "plane,u0,v0,u1,v1\n";
+  polygons << "plane,particle,loop,size,template,u,v\n";
   for (const PackingSection& s : sections) {
     const std::string plane = plane_name(s);
     for (const SectionDisk& d : s.disks)
       disks << plane << ',' << "xyz"[s.normal_axis] << ',' << s.offset << ',' << d.u << ',' << d.v << ',' << d.radius << ','
             << d.size << '\n';
-    if (s.disks.empty()) disks << plane << ',' << "xyz"[s.normal_axis] << ',' << s.offset << ",,,,\n";  // a plane that cuts none
+    if (s.disks.empty()) disks << plane << ',' << "xyz"[s.normal_axis] << ',' << s.offset << ",,,,\n";
     for (const auto& seg : s.outline) outline << plane << ',' << seg[0] << ',' << seg[1] << ',' << seg[2] << ',' << seg[3] << '\n';
+    for (std::size_t k = 0; k < s.polygons.size(); ++k) {
+      const SectionPolygon& p = s.polygons[k];
+      for (const auto& q : p.points)
+        polygons << plane << ',' << p.particle << ',' << k << ',' << p.size << ',' << p.template_id << ',' << q[0] << ',' << q[1] << '\n';
+    }
   }
-  return {disks.str(), outline.str()};
+  return {disks.str(), outline.str(), polygons.str()};
 }
 
 /// A private folder inside the plots folder (mkdtemp: never one of the user's) for the script's
@@ -115,28 +128,32 @@ class PlotWorkFolder {
 
 /// Runs the plot script into a private folder and moves the figures into the plots folder only
 /// when every one was drawn; returns an empty string on success, else what went wrong.
-std::string draw_plots(const AnalyzeCommandOptions& o, const std::string& json_text, const std::string& cdf_text,
-                       const std::vector<PackingSection>& sections) {
+std::string draw_plots(const std::string& plots_dir, const std::string& python, const PackingAnalysis& a,
+                       const std::string& json_text, const std::string& cdf_text, const std::vector<PackingSection>& sections) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (!fs::exists(o.python, ec))
-    return o.python + " not found: the plots need Debian's python3 and python3-matplotlib (apt-get install python3-matplotlib)";
-  PlotWorkFolder work(o.plots_dir);
+  if (!fs::exists(python, ec))
+    return python + " not found: the plots need Debian's python3 and python3-matplotlib (apt-get install python3-matplotlib)";
+  PlotWorkFolder work(plots_dir);
   const std::string json_path = work.file("analysis.json"), cdf_path = work.file("radius_cdf.csv");
   std::vector<std::string> names(std::begin(kPlotFiles), std::end(kPlotFiles));
+  if (a.wall_profile.computed()) names.push_back("wall_profile.png");
+  if (a.bed.computed()) names.push_back("bed_profile.png");
   for (const PackingSection& s : sections) names.push_back("section_" + plane_name(s) + ".png");
   std::vector<std::string> drawn;
   for (const std::string& name : names) drawn.push_back(work.file(name));
   write_text_file_atomically(json_path, json_text);
   write_text_file_atomically(cdf_path, cdf_text);
-  std::string cmd = shell_quoted(o.python) + " " + shell_quoted(FRONTPACK_PLOT_SCRIPT) + " " + shell_quoted(json_path) + " " +
+  std::string cmd = shell_quoted(python) + " " + shell_quoted(FRONTPACK_PLOT_SCRIPT) + " " + shell_quoted(json_path) + " " +
                     shell_quoted(cdf_path) + " " + shell_quoted(work.path());
   if (!sections.empty()) {
-    const auto [disks, outline] = sections_csv(sections);
-    const std::string disks_path = work.file("sections.csv"), outline_path = work.file("outline.csv");
-    write_text_file_atomically(disks_path, disks);
-    write_text_file_atomically(outline_path, outline);
-    cmd += " " + shell_quoted(disks_path) + " " + shell_quoted(outline_path);
+    const SectionsCsv csv = sections_csv(sections);
+    const std::string disks_path = work.file("sections.csv"), outline_path = work.file("outline.csv"),
+                      polygons_path = work.file("polygons.csv");
+    write_text_file_atomically(disks_path, csv.disks);
+    write_text_file_atomically(outline_path, csv.outline);
+    write_text_file_atomically(polygons_path, csv.polygons);
+    cmd += " " + shell_quoted(disks_path) + " " + shell_quoted(outline_path) + " " + shell_quoted(polygons_path);
   }
   const int status = std::system(cmd.c_str());
   if (!WIFEXITED(status)) return "the plot script did not finish";
@@ -150,7 +167,7 @@ std::string draw_plots(const AnalyzeCommandOptions& o, const std::string& json_t
   const CleanupSignalsBlocked hold;  // all figures or none, Ctrl-C included
   std::size_t moved = 0;
   for (; moved < drawn.size(); ++moved) {
-    const std::string target = (fs::path(o.plots_dir) / names[moved]).string();
+    const std::string target = (fs::path(plots_dir) / names[moved]).string();
     if (std::rename(drawn[moved].c_str(), atomic_write_target(target).c_str()) != 0)
       return "cannot move " + target + " into place: " + std::strerror(errno) + " (" + std::to_string(moved) +
              " of " + std::to_string(drawn.size()) + " figures were replaced)";
@@ -170,7 +187,7 @@ int report(const PackingAnalysis& a, const std::optional<Scene>& scene, const st
     std::printf("%s\n", a.summary().c_str());
   }
   if (o.plots_dir.empty()) return 0;
-  const std::string problem = draw_plots(o, json, radius_cdf_csv(sizes, law), sections);
+  const std::string problem = draw_plots(o.plots_dir, o.python, a, json, radius_cdf_csv(sizes, law), sections);
   if (!problem.empty()) {
     std::fprintf(stderr, "frontpack: error: no plots: %s\n", problem.c_str());
     return 1;
@@ -195,7 +212,7 @@ std::pair<std::vector<double>, const RadiusDistribution*> radius_figure(const Pa
 }
 
 /// The sections drawn with the figures: spheres (disks) in the scene's container, or the
-/// bounding box of the balls without a scene; none for shapes (not drawn yet).
+/// bounding box of the balls without a scene; shapes in the scene's container.
 template <int D>
 std::vector<PackingSection> sections_of(const PackingInput& in, const Packing<D>& P) {
   if (in.scene) return packing_sections<D>(P, *in.scene->container<D>());
@@ -203,8 +220,8 @@ std::vector<PackingSection> sections_of(const PackingInput& in, const Packing<D>
   return box ? packing_sections<D>(P, *box) : std::vector<PackingSection>{};
 }
 template <int D>
-std::vector<PackingSection> sections_of(const PackingInput&, const ShapePacking<D>&) {
-  return {};
+std::vector<PackingSection> sections_of(const PackingInput& in, const ShapePacking<D>& P) {
+  return in.scene ? shape_sections<D>(P, *in.scene->container<D>()) : std::vector<PackingSection>{};
 }
 
 /// The analysis of cli/pack_api.hpp (a packing of shapes at the scene's tolerance of `pack`,
@@ -216,7 +233,22 @@ int analyze(const PackingInput& in, const P& packing, const AnalyzeCommandOption
   return report(a, in.scene, sizes, law, o.plots_dir.empty() ? std::vector<PackingSection>{} : sections_of(in, packing), o);
 }
 
+template <class P>
+std::string figures_of(const PackingInput& in, const P& packing, const PackingAnalysis& a, const std::string& plots_dir,
+                       const std::string& python) {
+  const auto [sizes, law] = radius_figure(in, packing);
+  return draw_plots(plots_dir, python, a, analysis_json(a), radius_cdf_csv(sizes, law), sections_of(in, packing));
+}
+
 }  // namespace
+
+std::string draw_analysis_figures(const PackingInput& in, const PackingAnalysis& a, const std::string& plots_dir,
+                                  const std::string& python) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(plots_dir, ec)) return "the plots folder '" + plots_dir + "' does not exist";
+  if (in.shapes) return in.dimension == 2 ? figures_of(in, in.shapes2, a, plots_dir, python) : figures_of(in, in.shapes3, a, plots_dir, python);
+  return in.dimension == 2 ? figures_of(in, in.packing2, a, plots_dir, python) : figures_of(in, in.packing3, a, plots_dir, python);
+}
 
 int run_analyze_command(const AnalyzeCommandOptions& o) {
   PackingInput in;
@@ -231,6 +263,7 @@ int run_analyze_command(const AnalyzeCommandOptions& o) {
                                  "' does not exist (frontpack does not create folders)");
       std::vector<std::string> names(std::begin(kPlotFiles), std::end(kPlotFiles));
       names.insert(names.end(), std::begin(kSectionFiles), std::end(kSectionFiles));
+      names.insert(names.end(), std::begin(kProfileFiles), std::end(kProfileFiles));
       for (const std::string& name : names)
         writes.push_back({(std::filesystem::path(o.plots_dir) / name).string(), "option --plots", "figure"});
     }

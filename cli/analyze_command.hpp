@@ -9,6 +9,9 @@
 
 namespace fp {
 
+struct PackingInput;
+struct PackingAnalysis;
+
 struct AnalyzeCommandOptions {
   std::string packing_path;
   std::string scene_path;   ///< optional: container, requested distribution, contact tolerance
@@ -25,5 +28,11 @@ struct AnalyzeCommandOptions {
 /// Exit code: 0 done; 1 the plots could not be drawn (the table and JSON are still written);
 /// 2 bad input.
 int run_analyze_command(const AnalyzeCommandOptions& options);
+
+/// The figures `analyze --plots DIR` draws, of a packing read and analysed (`a`, from
+/// analyze_input), into the existing folder `plots_dir`: every figure or none. Returns "" when
+/// drawn, else what went wrong (no folder, no matplotlib, a failed script).
+std::string draw_analysis_figures(const PackingInput& in, const PackingAnalysis& a, const std::string& plots_dir,
+                                  const std::string& python = "/usr/bin/python3");
 
 }  // namespace fp

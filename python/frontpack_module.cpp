@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/analyze_command.hpp"
 #include "cli/pack_api.hpp"
 #include "cli/packing_input.hpp"
 #include "cli/study_command.hpp"
@@ -433,13 +434,22 @@ PYBIND11_MODULE(frontpack, m) {
         "(default: the one built with this module).");
   m.def(
       "analyze",
-      [](const PyPacking& p, const py::object& scene, double tolerance, long long threads) {
+      [](const PyPacking& p, const py::object& scene, double tolerance, long long threads, const py::object& plots) {
+        const std::string folder = plots.is_none() ? std::string() : path_of(plots);  // with the GIL held
         return json_loads(in_scene(p, scene, tolerance, threads, [&](const PackingInput& in) {
-          return analysis_json(analyze_input(in, tolerance, static_cast<int>(threads)));
+          const PackingAnalysis a = analyze_input(in, tolerance, static_cast<int>(threads));
+          if (!folder.empty()) {
+            const std::string problem = draw_analysis_figures(in, a, folder);
+            if (!problem.empty()) throw std::runtime_error("no figures: " + problem);
+          }
+          return analysis_json(a);
         }));
       },
       py::arg("packing"), py::kw_only(), py::arg("scene") = py::none(), py::arg("tolerance") = -1.0, py::arg("threads") = 0,
-      "The analysis of `frontpack analyze PACKING --scene S --json`, as a dict: in the packing's scene, or `scene`.");
+      py::arg("plots") = py::none(),
+      "The analysis of `frontpack analyze PACKING --scene S --json`, as a dict: in the packing's scene, or `scene`. "
+      "plots: an existing folder to draw the figures of `--plots` into (sections through the packing, profiles, "
+      "statistics; Debian's python3-matplotlib).");
   m.def(
       "validate",
       [](const PyPacking& p, const py::object& scene, double tolerance, long long threads) {

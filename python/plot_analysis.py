@@ -1,15 +1,17 @@
 #!/usr/bin/env python3
 """Figures of a frontpack analysis, called by `frontpack analyze --plots DIR`.
 
-    plot_analysis.py ANALYSIS.json RADIUS_CDF.csv OUT_DIR [SECTIONS.csv OUTLINE.csv]
+    plot_analysis.py ANALYSIS.json RADIUS_CDF.csv OUT_DIR [SECTIONS.csv OUTLINE.csv [POLYGONS.csv]]
 
 ANALYSIS.json is core/io/analysis_json.hpp's layout; RADIUS_CDF.csv has columns
 r,empirical,requested (requested empty without a scene). Writes vf_curve.png,
-wall_profile.png, coordination.png, radii.png, rdf.png, partial_coordination.png and fabric.png.
-With SECTIONS.csv (plane,normal,offset,u,v,radius,size: each sphere's exact section by a plane,
-core/metrics/packing_sections.hpp) and OUTLINE.csv (plane,u0,v0,u1,v1: the container's section as
-segments), also section_<plane>.png for each plane: the sections coloured by the particle's
-radius, the container's outline in black.
+wall_profile.png, coordination.png, radii.png, rdf.png, partial_coordination.png and fabric.png,
+and bed_profile.png for a bed. With SECTIONS.csv (plane,normal,offset,u,v,radius,size: each
+sphere's exact section by a plane, core/metrics/packing_sections.hpp) and OUTLINE.csv
+(plane,u0,v0,u1,v1: the container's section as segments), also section_<plane>.png for each
+plane: the sections coloured by the particle's size, the container's outline in black.
+POLYGONS.csv (plane,particle,size,template,u,v: the loops of the other shapes' sections, a
+particle's points in order, contact/shape_sections.hpp) adds them, filled.
 Exit code 3 when matplotlib is missing (Debian: apt-get install python3-matplotlib).
 """
 import csv
@@ -59,6 +61,25 @@ def wall_profile(a, out_dir):
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
     save(fig, out_dir, "wall_profile.png")
+
+
+def bed_profile(a, out_dir):
+    b = a["volume_fraction"].get("bed_profile")
+    if not b or not b.get("vf"):
+        return
+    fig, ax = plt.subplots(figsize=(4.5, 5))
+    ax.plot(b["vf"], b["slab_middle"], "o-", ms=2.5, label="slabs of %.3g" % b["width"])
+    if b.get("bulk") is not None:
+        ax.axvline(b["bulk"], color="grey", ls="--", lw=0.8, label="bulk %.4f" % b["bulk"])
+    ax.axhline(b["height"], color="black", lw=0.8, label="level")
+    if b.get("half_bulk_height") is not None:
+        ax.axhline(b["half_bulk_height"], color="grey", ls=":", lw=0.8, label="half the bulk")
+    ax.set_xlabel("solid fraction")
+    ax.set_ylabel("height above the floor")
+    ax.set_title("bed profile")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    save(fig, out_dir, "bed_profile.png")
 
 
 def coordination(a, out_dir):
@@ -137,30 +158,37 @@ def fabric(a, out_dir):
     save(fig, out_dir, "fabric.png")
 
 
-def sections(disks_path, outline_path, out_dir):
+def sections(disks_path, outline_path, out_dir, polygons_path=None):
     from matplotlib.collections import LineCollection, PatchCollection
-    from matplotlib.patches import Circle
+    from matplotlib.patches import Circle, Polygon
 
     planes = {}
     with open(disks_path) as f:
         for row in csv.DictReader(f):
             p = planes.setdefault(row["plane"], {"normal": row["normal"], "offset": float(row["offset"]), "disks": [],
-                                                 "outline": []})
+                                                 "outline": [], "loops": {}})
             if row["u"]:
                 p["disks"].append((float(row["u"]), float(row["v"]), float(row["radius"]), float(row["size"])))
     with open(outline_path) as f:
         for row in csv.DictReader(f):
             planes[row["plane"]]["outline"].append(((float(row["u0"]), float(row["v0"])), (float(row["u1"]), float(row["v1"]))))
-    sizes = [d[3] for p in planes.values() for d in p["disks"]]
+    if polygons_path:
+        with open(polygons_path) as f:
+            for row in csv.DictReader(f):  # one loop per (particle, loop): its points in order
+                key = (int(row["particle"]), int(row["loop"]))
+                loop = planes[row["plane"]]["loops"].setdefault(key, {"size": float(row["size"]), "points": []})
+                loop["points"].append((float(row["u"]), float(row["v"])))
+    sizes = [d[3] for p in planes.values() for d in p["disks"]] + [l["size"] for p in planes.values() for l in p["loops"].values()]
     lo, hi = (min(sizes), max(sizes)) if sizes else (0.0, 1.0)
     for name, p in planes.items():
         fig, ax = plt.subplots(figsize=(6, 5.4))
-        if p["disks"]:
-            circles = PatchCollection([Circle((u, v), r) for u, v, r, _ in p["disks"]], cmap="viridis", linewidths=0)
-            circles.set_array([d[3] for d in p["disks"]])
-            circles.set_clim(lo, hi if hi > lo else lo + 1e-300)
-            ax.add_collection(circles)
-            fig.colorbar(circles, ax=ax, label="particle radius", shrink=0.8)
+        patches = [Circle((u, v), r) for u, v, r, _ in p["disks"]] + [Polygon(l["points"], closed=True) for l in p["loops"].values()]
+        if patches:
+            shown = PatchCollection(patches, cmap="viridis", linewidths=0)
+            shown.set_array([d[3] for d in p["disks"]] + [l["size"] for l in p["loops"].values()])
+            shown.set_clim(lo, hi if hi > lo else lo + 1e-300)
+            ax.add_collection(shown)
+            fig.colorbar(shown, ax=ax, label="particle radius" if p["disks"] else "particle size", shrink=0.8)
         if p["outline"]:
             ax.add_collection(LineCollection(p["outline"], colors="black", linewidths=1.0))
         ax.autoscale_view()
@@ -168,12 +196,13 @@ def sections(disks_path, outline_path, out_dir):
         ax.set_xlabel(name[0])
         ax.set_ylabel(name[1])
         where = "" if p["normal"] == "z" and len(planes) == 1 else " at %s = %.6g" % (p["normal"], p["offset"])
-        ax.set_title("section%s: %d particles cut" % (where, len(p["disks"])))
+        cut = len(p["disks"]) + len({particle for particle, _ in p["loops"]})
+        ax.set_title("section%s: %d particles cut" % (where, cut))
         save(fig, out_dir, "section_%s.png" % name)
 
 
 def main():
-    if len(sys.argv) not in (4, 6):
+    if len(sys.argv) not in (4, 6, 7):
         sys.stderr.write(__doc__)
         return 2
     with open(sys.argv[1]) as f:
@@ -186,8 +215,9 @@ def main():
     rdf(a, out_dir)
     partial_coordination(a, out_dir)
     fabric(a, out_dir)
-    if len(sys.argv) == 6:
-        sections(sys.argv[4], sys.argv[5], out_dir)
+    bed_profile(a, out_dir)
+    if len(sys.argv) >= 6:
+        sections(sys.argv[4], sys.argv[5], out_dir, sys.argv[6] if len(sys.argv) == 7 else None)
     return 0
 
 

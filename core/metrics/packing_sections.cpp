@@ -39,7 +39,7 @@ std::vector<std::array<double, 4>> zero_level(const F& f, double u0, double v0, 
 }  // namespace
 
 template <int D>
-std::vector<PackingSection> packing_sections(const Packing<D>& packing, const Container<D>& container, int grid) {
+std::vector<PackingSection> section_planes(const Container<D>& container, const Vec<D>& origin, int grid) {
   const Aabb<D> bounds = container.bounds();
   const Vec<D> middle = (bounds.lo + bounds.hi) / 2;
   std::vector<PackingSection> out;
@@ -49,17 +49,8 @@ std::vector<PackingSection> packing_sections(const Packing<D>& packing, const Co
     s.normal_axis = D == 3 ? k : 2;
     s.u_axis = D == 3 ? (k == 0 ? 1 : 0) : 0;
     s.v_axis = D == 3 ? (k == 2 ? 1 : 2) : 1;
-    const double c = D == 3 ? middle[k] : 0.0;
-    s.offset = D == 3 ? c + packing.origin[k] : 0.0;
+    s.offset = D == 3 ? middle[k] + origin[k] : 0.0;
     const int U = s.u_axis, V = s.v_axis;
-    for (std::size_t i = 0; i < packing.size(); ++i) {
-      const double r = packing.radii[i];
-      if (!std::isfinite(r) || !packing.centers[i].allFinite()) continue;
-      const double h = D == 3 ? packing.centers[i][k] - c : 0.0;
-      if (!(std::abs(h) < r)) continue;
-      s.disks.push_back({packing.centers[i][U] + packing.origin[U], packing.centers[i][V] + packing.origin[V],
-                         std::sqrt((r - h) * (r + h)), r});
-    }
     // The outline on the bounds padded by 2 % (a boundary on the bounds still changes sign).
     const double pu = 0.02 * (bounds.hi[U] - bounds.lo[U]), pv = 0.02 * (bounds.hi[V] - bounds.lo[V]);
     const auto f = [&](double u, double v) {
@@ -69,14 +60,35 @@ std::vector<PackingSection> packing_sections(const Packing<D>& packing, const Co
     };
     s.outline = zero_level(f, bounds.lo[U] - pu, bounds.lo[V] - pv, bounds.hi[U] + pu, bounds.hi[V] + pv, grid);
     for (auto& seg : s.outline) {
-      seg[0] += packing.origin[U], seg[2] += packing.origin[U];
-      seg[1] += packing.origin[V], seg[3] += packing.origin[V];
+      seg[0] += origin[U], seg[2] += origin[U];
+      seg[1] += origin[V], seg[3] += origin[V];
     }
     out.push_back(std::move(s));
   }
   return out;
 }
 
+template <int D>
+std::vector<PackingSection> packing_sections(const Packing<D>& packing, const Container<D>& container, int grid) {
+  std::vector<PackingSection> out = section_planes<D>(container, packing.origin, grid);
+  const Aabb<D> bounds = container.bounds();
+  for (PackingSection& s : out) {
+    const int k = s.normal_axis, U = s.u_axis, V = s.v_axis;
+    const double c = D == 3 ? (bounds.lo[k] + bounds.hi[k]) / 2 : 0.0;  // the plane in the packing's frame, as section_planes has it
+    for (std::size_t i = 0; i < packing.size(); ++i) {
+      const double r = packing.radii[i];
+      if (!std::isfinite(r) || !packing.centers[i].allFinite()) continue;
+      const double h = D == 3 ? packing.centers[i][k] - c : 0.0;
+      if (!(std::abs(h) < r)) continue;
+      s.disks.push_back({packing.centers[i][U] + packing.origin[U], packing.centers[i][V] + packing.origin[V],
+                         std::sqrt((r - h) * (r + h)), r});
+    }
+  }
+  return out;
+}
+
+template std::vector<PackingSection> section_planes<2>(const Container<2>&, const Vec<2>&, int);
+template std::vector<PackingSection> section_planes<3>(const Container<3>&, const Vec<3>&, int);
 template std::vector<PackingSection> packing_sections<2>(const Packing<2>&, const Container<2>&, int);
 template std::vector<PackingSection> packing_sections<3>(const Packing<3>&, const Container<3>&, int);
 

@@ -19,6 +19,16 @@ struct SectionDisk {
   double size = 0.0;        ///< the particle's radius
 };
 
+/// A particle of another shape cut by the plane: its section as closed loops (u, v) of the
+/// particle's surface mesh cut by the plane (exact for polyhedra and polygons; curved shapes to
+/// their mesh), drawn filled.
+struct SectionPolygon {
+  std::vector<std::array<double, 2>> points;  ///< a closed loop (the last point joins the first)
+  double size = 0.0;                          ///< the particle's size (on its template's dimension)
+  int template_id = 0;
+  std::size_t particle = 0;                   ///< its index in the packing (a cluster cut gives several loops)
+};
+
 struct PackingSection {
   /// The axis the plane is normal to (0: x = offset, drawn in y, z; 1: y, drawn in x, z; 2: z,
   /// drawn in x, y); in 2D 2, the packing's own plane.
@@ -26,12 +36,17 @@ struct PackingSection {
   double offset = 0.0;  ///< the plane's coordinate along its normal (absolute; 0 in 2D)
   int u_axis = 0, v_axis = 1;
   std::vector<SectionDisk> disks;
+  std::vector<SectionPolygon> polygons;
   std::vector<std::array<double, 4>> outline;  ///< the container's section: segments (u0, v0, u1, v1)
 };
 
-/// The sections (3D: normal to x, y, z through the centre of the container's bounds; 2D: one).
-/// `grid`: cells per side of the marching-squares grid of the outline. Balls with a non-finite
-/// centre or radius are left out.
+/// The planes (3D: normal to x, y, z through the centre of the container's bounds; 2D: one),
+/// each with the container's outline and no particles yet; `origin`: the packing's frame origin
+/// (added to every coordinate). `grid`: cells per side of the marching-squares grid of the outline.
+template <int D>
+std::vector<PackingSection> section_planes(const Container<D>& container, const Vec<D>& origin, int grid = 512);
+
+/// The planes with the balls' sections. Balls with a non-finite centre or radius are left out.
 template <int D>
 std::vector<PackingSection> packing_sections(const Packing<D>& packing, const Container<D>& container, int grid = 512);
 

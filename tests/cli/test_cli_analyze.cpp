@@ -89,7 +89,7 @@ TEST_F(CliAnalyze, PackingsOfShapesFromTheirJsonOutput) {
   EXPECT_EQ(plots.exit_code, 0) << plots.out << plots.err;
   EXPECT_EQ(listing(dir.work() / "plots"),
             (std::set<std::string>{"coordination.png", "fabric.png", "partial_coordination.png", "radii.png", "rdf.png",
-                                   "vf_curve.png"}));
+                                   "vf_curve.png", "wall_profile.png", "section_xy.png", "section_xz.png", "section_yz.png"}));
 }
 
 TEST_F(CliAnalyze, WithoutASceneTheBoundingBoxStandsIn) {
@@ -107,7 +107,7 @@ TEST_F(CliAnalyze, PlotsAreDrawn) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(listing(dir.work() / "figs"),
             (std::set<std::string>{"coordination.png", "fabric.png", "partial_coordination.png", "radii.png", "rdf.png",
-                                   "vf_curve.png", "section_xy.png", "section_xz.png", "section_yz.png"}));
+                                   "vf_curve.png", "wall_profile.png", "section_xy.png", "section_xz.png", "section_yz.png"}));
   for (const auto& e : fs::directory_iterator(dir.work() / "figs")) EXPECT_GT(fs::file_size(e.path()), 5000u);
 }
 

@@ -298,6 +298,13 @@ TEST(CliBedPicture, TheContainerIsDrawnUpToTheLevel) {
                                      "particles: {radius: {distribution: constant, value: 0.05}}\n");
   ASSERT_EQ(run_frontpack(dir, "pack r.yaml -q -o r.vtu").exit_code, 0);
   EXPECT_EQ(python_check(kCheckBedWalls, {dir.work() / "r.container.vtu", "0.5", "1"}), 0);
+  // analyze --plots adds the profile's figure.
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") != 0)
+    GTEST_SKIP() << "python3-matplotlib is not installed (scripts/install-deps.sh --test installs it)";
+  fs::create_directory(dir.work() / "figs");
+  ASSERT_EQ(run_frontpack(dir, "analyze b.vtu --scene b.yaml -q --plots figs").exit_code, 0);
+  EXPECT_GT(fs::file_size(dir.work() / "figs" / "bed_profile.png"), 5000u);
+  EXPECT_TRUE(fs::exists(dir.work() / "figs" / "section_xz.png"));
 }
 
 TEST(CliBedRefusals, NamesTheKey) {

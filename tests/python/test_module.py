@@ -111,6 +111,27 @@ def test_a_bed_is_packed_and_profiled_as_on_the_command_line(tmp_path):
     assert profile["surface"]["max"] <= 0.25 and profile["surface"]["columns"] > 10
 
 
+def test_figures_are_the_command_lines(tmp_path):
+    pytest.importorskip("matplotlib")
+    caps = dict(BOX, container={"type": "box", "min": [0, 0, 0], "max": [1.2, 1.2, 2], "bed": {"height": 0.8}},
+                particles=[{"shape": "spherocylinder", "aspect_ratio": 0.5,
+                            "size": {"distribution": "uniform", "min": 0.1, "max": 0.12}}])
+    p = frontpack.pack(caps)
+    (tmp_path / "py").mkdir()
+    (tmp_path / "cli").mkdir()
+    a = frontpack.analyze(p, plots=tmp_path / "py")
+    assert a == frontpack.analyze(p)
+    p.write(str(tmp_path / "caps.json"))
+    scene = write_scene(tmp_path, caps)
+    r = cli("analyze", "caps.json", "--scene", scene, "--plots", "cli", "-q", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    drawn = sorted(f.name for f in (tmp_path / "py").iterdir())
+    assert drawn == sorted(f.name for f in (tmp_path / "cli").iterdir())
+    assert {"section_xy.png", "section_xz.png", "section_yz.png", "bed_profile.png", "wall_profile.png"} <= set(drawn)
+    with pytest.raises(RuntimeError, match="does not exist"):
+        frontpack.analyze(p, plots=tmp_path / "none")
+
+
 def test_arrays_are_read_only_views_that_keep_the_packing(box_run):
     _, _, p = box_run
     radii = p.radii
