@@ -17,7 +17,8 @@ void register_builtin_shapes(ShapeFamilies& families) {
                 {"circumscribed_radius", "diameter", "equivalent_radius", "radius"}});
   families.add("spherocylinder", spherocylinder_prototype<2>, spherocylinder_prototype<3>,
                {"a stadium (2D) or a capsule (3D): a cylinder with hemispherical caps",
-                {{"aspect_ratio", "width / total length, in (0, 1] (1: a sphere)"}},
+                {{"elongation", "total length / width, >= 1 (1: a sphere; L/D + 1 for a shaft L, diameter D)"},
+                 {"aspect_ratio", "instead, the older key: width / total length, in (0, 1]"}},
                 {"circumscribed_radius", "cylinder_length", "equivalent_radius", "length", "radius", "width"}});
   families.add("cluster", cluster_prototype<2>, cluster_prototype<3>,
                {"a clump of overlapping disks (2D) or spheres (3D), rigid",
@@ -42,7 +43,9 @@ void register_builtin_shapes(ShapeFamilies& families) {
                {"an ellipsoid", {{"axes", "[a, b, c]: the semi-axes' ratios"}},
                 {"circumscribed_radius", "equivalent_radius", "semi_axis_a", "semi_axis_b", "semi_axis_c"}});
   families.add("cylinder", nullptr, cylinder_prototype,
-               {"a circular cylinder with flat ends", {{"aspect_ratio", "diameter / height, > 0"}},
+               {"a circular cylinder with flat ends",
+                {{"elongation", "height / diameter, > 0 (above 1 a rod, below 1 a disc)"},
+                 {"aspect_ratio", "instead, the older key: diameter / height, > 0"}},
                 {"circumscribed_radius", "diameter", "equivalent_radius", "height", "radius"}});
 }
 

@@ -78,7 +78,7 @@ std::string CylinderShape::definition_json() const {
 
 ShapePrototype<3> cylinder_prototype(const ShapeParameters& p) {
   const ParameterReader r(p);
-  const double k = r.number_in("aspect_ratio", "diameter / height", 0.0, std::numeric_limits<double>::infinity());
+  const double k = width_over_length(r, "height", "diameter", /*rod_only=*/false);
   const double h = 1 / std::hypot(1.0, k);  // r = k h and r^2 + h^2 = 1
   auto shape = std::make_shared<CylinderShape>(k * h, h);
   return {shape,

@@ -30,8 +30,8 @@ class CylinderShape final : public Shape<3> {
   double r_, h_;
 };
 
-/// "cylinder": aspect_ratio = diameter / height (> 0). Dimensions: circumscribed_radius, radius,
-/// diameter, height, equivalent_radius.
+/// "cylinder": elongation = height / diameter > 0 (or aspect_ratio, its inverse). Dimensions:
+/// circumscribed_radius, radius, diameter, height, equivalent_radius.
 ShapePrototype<3> cylinder_prototype(const ShapeParameters& p);
 
 }  // namespace fp

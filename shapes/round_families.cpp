@@ -24,7 +24,7 @@ ShapePrototype<D> sphere_prototype(const ShapeParameters& p) {
 template <int D>
 ShapePrototype<D> spherocylinder_prototype(const ShapeParameters& p) {
   const ParameterReader r(p);
-  const double k = r.number_in("aspect_ratio", "width / total length", 0.0, 1.0);
+  const double k = width_over_length(r, "total length", "width", /*rod_only=*/true);
   auto shape = std::make_shared<SpherocylinderShape<D>>(1.0 - k, k);
   return {shape,
           {{"circumscribed_radius", 1.0},

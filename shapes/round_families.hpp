@@ -9,9 +9,9 @@ namespace fp {
 template <int D>
 ShapePrototype<D> sphere_prototype(const ShapeParameters& p);
 
-/// "spherocylinder": aspect_ratio = width / total length in (0, 1]. At circumscribed radius 1 the
-/// radius is the aspect ratio r and the segment half-length 1 - r. Dimensions: radius (r),
-/// length (2), width (2r), cylinder_length (2(1 - r)).
+/// "spherocylinder": elongation = total length / width >= 1 (or aspect_ratio, its inverse, in
+/// (0, 1]). At circumscribed radius 1 the radius is r = 1 / elongation and the segment
+/// half-length 1 - r. Dimensions: radius (r), length (2), width (2r), cylinder_length (2(1 - r)).
 template <int D>
 ShapePrototype<D> spherocylinder_prototype(const ShapeParameters& p);
 

@@ -5,6 +5,7 @@
 #include "shapes/shape_parameters.hpp"
 
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "core/io/scene_error.hpp"
@@ -120,6 +121,16 @@ void ParameterReader::check_known(const std::vector<std::string>& known, const s
   for (const auto& [k, v] : p_.point_lists) keys.insert(k);
   for (const auto& [k, v] : p_.strings) keys.insert(k);
   for (const auto& k : keys) check(k);
+}
+
+double width_over_length(const ParameterReader& r, const std::string& length, const std::string& width, bool rod_only) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::string elongation = length + " / " + width, aspect = width + " / " + length;
+  if (r.has("elongation") && r.has("aspect_ratio"))
+    r.fail("aspect_ratio", "give elongation (" + elongation + ") or aspect_ratio (its inverse, the older key), not both");
+  if (r.has("aspect_ratio")) return r.number_in("aspect_ratio", aspect, 0.0, rod_only ? 1.0 : inf);
+  if (!r.has("elongation")) r.fail("elongation", "missing: " + elongation + " (or aspect_ratio = " + aspect + ")");
+  return 1.0 / r.number_in("elongation", elongation, rod_only ? 1.0 : 0.0, inf, /*closed_lo=*/rod_only);
 }
 
 }  // namespace fp

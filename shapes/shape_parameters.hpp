@@ -31,4 +31,11 @@ class ParameterReader {
   const ShapeParameters& p_;
 };
 
+/// An elongated family's width over its total length, from `elongation` (total length / width:
+/// above 1 a rod, below 1 a disc, as the DEM literature's aspect ratio L/D) or from the older key
+/// `aspect_ratio` (its inverse, width / total length), kept as an alias; one of the two.
+/// `length` and `width` name the family's own (e.g. "height", "diameter"); `rod_only`: its length
+/// is never below its width (a capsule: elongation >= 1, 1 a sphere).
+double width_over_length(const ParameterReader& r, const std::string& length, const std::string& width, bool rod_only);
+
 }  // namespace fp

@@ -107,6 +107,12 @@ TEST_P(CliShapes, SameSeedSameCsv) {
   EXPECT_GT(lines_of(a).size(), 5u);
   EXPECT_EQ(a, read_bytes(dir.work() / "b.csv"));
   EXPECT_NE(a, read_bytes(dir.work() / "c.csv"));
+  // elongation 2 is aspect_ratio 0.5, its older inverse: the same packing.
+  std::string elongated = capsule_scene(D, D == 2 ? 20 : 10);
+  elongated.replace(elongated.find("aspect_ratio: 0.5"), 17, "elongation: 2");
+  write_bytes(dir.work() / "long.yaml", elongated);
+  ASSERT_EQ(run_frontpack(dir, "pack long.yaml -q -o d.csv").exit_code, kIncomplete);
+  EXPECT_EQ(a, read_bytes(dir.work() / "d.csv"));
 }
 
 TEST_P(CliShapes, YadeCannotHoldCapsules) {

@@ -83,14 +83,38 @@ TEST(ShapeFamilies, BadAspectRatioIsReportedWhereItWasWritten) {
             "scene.yaml:9:21: key 'particles[0].aspect_ratio': must be > 0 (diameter / height; got -2)");
   // Missing: reported at the template, under the key it should have had.
   EXPECT_EQ(error_of<3>(make_spec("spherocylinder")),
-            "scene.yaml:7:3: key 'particles[0].aspect_ratio': missing: width / total length");
+            "scene.yaml:7:3: key 'particles[0].elongation': missing: total length / width (or aspect_ratio = width / "
+            "total length)");
+}
+
+TEST(ShapeFamilies, ElongationIsTheInverseOfTheOlderAspectRatioForCapsulesAndCylinders) {
+  // The same shape from either key: elongation 2 is aspect_ratio 0.5 exactly.
+  for (const char* family : {"spherocylinder", "cylinder"}) {
+    const auto by_elongation = make_spec(family, numbers({{"elongation", 2}}));
+    const auto by_aspect = make_spec(family, numbers({{"aspect_ratio", 0.5}}));
+    const auto a = ShapeFamilies::builtin().prototype<3>(by_elongation), b = ShapeFamilies::builtin().prototype<3>(by_aspect);
+    EXPECT_EQ(a.shape->definition_json(), b.shape->definition_json()) << family;
+    EXPECT_EQ(a.dimensions, b.dimensions) << family;
+  }
+  // A capsule is never shorter than wide; a cylinder may be a disc.
+  ShapeParameters p = numbers({{"elongation", 0.5}});
+  p.spots["elongation"] = SourceSpot{"scene.yaml", 9, 21, "particles[0].elongation"};
+  EXPECT_EQ(error_of<3>(make_spec("spherocylinder", p)),
+            "scene.yaml:9:21: key 'particles[0].elongation': must be >= 1 (total length / width; got 0.5)");
+  EXPECT_EQ(error_of<3>(make_spec("cylinder", p)), "");
+  p.numbers["elongation"] = 0;
+  EXPECT_NE(error_of<3>(make_spec("cylinder", p)).find("must be > 0 (height / diameter; got 0)"), std::string::npos);
+  // Both keys: refused, at the older one.
+  EXPECT_NE(error_of<3>(make_spec("cylinder", numbers({{"elongation", 2}, {"aspect_ratio", 0.5}})))
+                .find("'particles[0].aspect_ratio': give elongation (height / diameter) or aspect_ratio (its inverse"),
+            std::string::npos);
 }
 
 TEST(ShapeFamilies, UnknownParameter) {
   EXPECT_EQ(error_of<3>(make_spec("sphere", numbers({{"radius", 2}}))),
             "scene.yaml:7:3: key 'particles[0].radius': unknown parameter 'radius' of shape 'sphere' (it takes none)");
   EXPECT_NE(error_of<3>(make_spec("spherocylinder", numbers({{"aspect_ratio", 0.5}, {"aspect", 2}})))
-                .find("key 'particles[0].aspect': unknown parameter 'aspect' of shape 'spherocylinder' (known: aspect_ratio)"),
+                .find("key 'particles[0].aspect': unknown parameter 'aspect' of shape 'spherocylinder' (known: "),
             std::string::npos);
 }
 
