@@ -65,6 +65,10 @@ void add_output_options(CLI::App* cmd, fp::PackCommandOptions& o, std::string& s
                   "extension, or --format for a single -o)")
       ->allow_extra_args(false);  // one PATH per -o: `-o a.csv scene.yaml` keeps the scene an argument
   cmd->add_option("--format", o.format, "format of a single -o: vtu | yade | lammps | csv | json");
+  cmd->add_option("--surfaces", o.surfaces,
+                  "the surfaces side file beside every vtu output of particles of shapes: fine (default) | coarse "
+                  "(half the segments per turn: a sixth of the size for capsules) | none")
+      ->check(CLI::IsMember({"fine", "coarse", "none"}));
   cmd->add_option("--seed", seed_text, "override the scene's 64-bit seed (decimal)")->check(decimal_seed);
   cmd->add_option("--record", o.record_path, "also write the JSON run record (without particles) to PATH");
   cmd->add_flag("-q,--quiet", o.quiet, "no summary on stdout");

@@ -15,6 +15,7 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/io/atomic_file.hpp"
@@ -59,6 +60,12 @@ void apply_output_options(Scene& scene, const PackCommandOptions& o) {
       scene.outputs.push_back(out);
     }
   }
+  if (!o.surfaces.empty()) {
+    if (scene.particle_templates.empty())
+      throw InputError("--surfaces: spheres have no surfaces side file (it draws particles of other shapes)");
+    for (OutputSpec& out : scene.outputs)
+      if (out.format == "vtu") out.surfaces = parse_surface_detail(o.surfaces);
+  }
   std::vector<NamedPath> writes;
   for (const OutputSpec& out : scene.outputs) {
     const std::string where = out.spot.file.empty() ? "option -o" : out.spot.describe();
@@ -101,9 +108,11 @@ int run(const Scene& scene, const PackCommandOptions& o, Make&& make) {
 
   std::vector<std::string> spared;
   const double write_seconds = write_outputs(
-      scene, o.record_path, rec, [&](OutputFormat format, const std::string& path) {
-        write_packing<D>(format, path, P, rec);
-        if (format == OutputFormat::Vtu) write_container_vtu(container_vtu_path(path), container);
+      scene, o.record_path, rec, [&](const OutputSpec& out) {
+        const OutputFormat format = parse_output_format(out.format);
+        if constexpr (std::is_same_v<std::decay_t<decltype(P)>, ShapePacking<D>>) write_packing<D>(format, out.path, P, rec, out.surfaces);
+        else write_packing<D>(format, out.path, P, rec);  // spheres: no surfaces
+        if (format == OutputFormat::Vtu) write_container_vtu(container_vtu_path(out.path), container);
       },
       !check.valid() || !check.incomplete.empty(), &spared);  // a stop the scene asked for is written
 

@@ -19,6 +19,7 @@ struct PackCommandOptions {
   std::string input_format;            ///< densify: its format (default: from its extension)
   std::vector<std::string> output_paths;  ///< -o, repeatable: replace the scene's outputs
   std::string format;                  ///< --format for a single -o
+  std::string surfaces;                ///< --surfaces fine | coarse | none: every vtu output's (shapes)
   std::string record_path;             ///< --record: JSON run record without particles
   std::optional<std::uint64_t> seed;   ///< --seed
   std::optional<int> threads;          ///< -j/--threads (replaces the scene's packer.threads)

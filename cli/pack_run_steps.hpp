@@ -29,7 +29,7 @@ namespace fp {
 inline std::vector<std::string> side_files(const Scene& scene, const OutputSpec& out) {
   const OutputFormat format = parse_output_format(out.format);
   std::vector<std::string> sides;
-  if (!scene.particle_templates.empty()) sides = companion_paths(format, out.path);
+  if (!scene.particle_templates.empty()) sides = companion_paths(format, out.path, out.surfaces);
   if (format == OutputFormat::Vtu) sides.push_back(container_vtu_path(out.path));
   return sides;
 }
@@ -45,7 +45,7 @@ auto pack_with_progress(bool shown, const Scene& scene, Pack&& pack) {
   return result;
 }
 
-/// Every output of the scene (`write_one(format, path)`) and the run record (if `record_path`),
+/// Every output of the scene (`write_one(output)`) and the run record (if `record_path`),
 /// all or none of them; returns the seconds it took. With `spare_existing` (a packing that failed
 /// its validation) a path that already holds a file is left as it is (a good packing of an
 /// earlier run is not replaced by a bad one) and added to *spared; the others are written, the
@@ -63,7 +63,7 @@ double write_outputs(const Scene& scene, const std::string& record_path, const R
   };
   AtomicFileGroup all_or_nothing;
   for (const OutputSpec& out : scene.outputs)
-    if (may_write(out.path)) write_one(parse_output_format(out.format), out.path);
+    if (may_write(out.path)) write_one(out);
   if (!record_path.empty() && may_write(record_path)) write_run_record(record_path, record);
   all_or_nothing.commit();
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

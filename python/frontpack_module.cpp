@@ -208,13 +208,16 @@ auto in_scene(const PyPacking& p, const py::object& scene, double tolerance, lon
 /// Writes the packing to `path`, checked as the command line checks its outputs first: no
 /// output (nor a side file of one) may be a file the packing was made from (its scene, a mesh)
 /// or another output.
-void write_file(const PyPacking& p, const py::object& where, const std::string& format) {
+void write_file(const PyPacking& p, const py::object& where, const std::string& format, const std::string& surfaces) {
   const std::string path = path_of(where);
   const OutputFormat f = format.empty() ? format_from_extension(path) : parse_output_format(format);
+  const SurfaceDetail detail = parse_surface_detail(surfaces);
   const PackingInput& in = p.in();
+  if (detail != SurfaceDetail::Fine && (!in.shapes || f != OutputFormat::Vtu))
+    throw py::value_error("surfaces: the surfaces side file is written beside a vtu output of particles of shapes only");
   std::vector<NamedPath> writes{{path, "Packing.write", "output"}};
   if (in.shapes)  // shape packings write a side file for vtu and lammps
-    for (const std::string& side : companion_paths(f, path))
+    for (const std::string& side : companion_paths(f, path, detail))
       writes.push_back({side, "Packing.write", "the side file of output '" + path + "'"});
   // Beside a vtu output, the container's boundary, when the scene it was packed in is known.
   const bool container_file = f == OutputFormat::Vtu && in.scene;
@@ -223,7 +226,8 @@ void write_file(const PyPacking& p, const py::object& where, const std::string& 
   const py::gil_scoped_release released;
   AtomicFileGroup all_or_nothing;
   if (in.shapes) {
-    in.dimension == 2 ? write_packing<2>(f, path, in.shapes2, p.run.record) : write_packing<3>(f, path, in.shapes3, p.run.record);
+    in.dimension == 2 ? write_packing<2>(f, path, in.shapes2, p.run.record, detail)
+                      : write_packing<3>(f, path, in.shapes3, p.run.record, detail);
   } else {
     in.dimension == 2 ? write_packing<2>(f, path, in.packing2, p.run.record) : write_packing<3>(f, path, in.packing3, p.run.record);
   }
@@ -384,11 +388,11 @@ PYBIND11_MODULE(frontpack, m) {
       .def_property_readonly("summary", [](const PyPacking& p) { return p.run.summary; },
                              "the analysis and packer lines of the command line's summary")
       .def_property_readonly("scene_path", [](const PyPacking& p) { return p.in().scene->source_path; })
-      .def("write", &write_file, py::arg("path"), py::arg("format") = "",
+      .def("write", &write_file, py::arg("path"), py::arg("format") = "", py::kw_only(), py::arg("surfaces") = "fine",
            "writes the packing (vtu, yade, lammps, csv, json; default: from the extension) with its side files "
-           "(vtu: <stem>.container.vtu, the container's boundary, and for shapes <stem>.surfaces.vtu; lammps of "
-           "clusters: <stem>.multisphere.txt), all or nothing; refuses (OutputPathError, a ValueError) a path "
-           "that is its scene or a file the scene reads")
+           "(vtu: <stem>.container.vtu, the container's boundary, and for shapes <stem>.surfaces.vtu, its detail "
+           "`surfaces`: fine | coarse | none; lammps of clusters: <stem>.multisphere.txt), all or nothing; refuses "
+           "(OutputPathError, a ValueError) a path that is its scene or a file the scene reads")
       .def("__repr__", [](const PyPacking& p) {
         return "<frontpack.Packing: " + std::to_string(p.size()) + (p.in().shapes ? " shapes" : " spheres") + ", " +
                std::to_string(p.in().dimension) + "D, scene " + p.in().scene->source_path +

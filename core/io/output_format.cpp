@@ -49,4 +49,19 @@ OutputFormat format_from_extension(const std::string& path) {
                               "' from its extension (known: .vtu, .txt/.yade, .data/.lammps, .csv, .json)");
 }
 
+SurfaceDetail parse_surface_detail(const std::string& name) {
+  if (name == "fine") return SurfaceDetail::Fine;
+  if (name == "coarse") return SurfaceDetail::Coarse;
+  if (name == "none") return SurfaceDetail::None;
+  throw std::invalid_argument("unknown surface detail '" + name + "' (known: fine, coarse, none)");
+}
+
+const char* surface_detail_name(SurfaceDetail detail) {
+  switch (detail) {
+    case SurfaceDetail::Coarse: return "coarse";
+    case SurfaceDetail::None: return "none";
+    default: return "fine";
+  }
+}
+
 }  // namespace fp

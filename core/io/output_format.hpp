@@ -21,4 +21,14 @@ OutputFormat format_from_extension(const std::string& path);
 /// "vtu, yade, lammps, csv, json": for error messages.
 const char* output_format_names();
 
+/// How finely a vtu output of particles of shapes draws their surfaces in its side file
+/// "<stem>.surfaces.vtu": Fine (the default), Coarse (half the segments per turn of a curved
+/// part: a sixth of the file for capsules), or None (no side file; the main file keeps each
+/// particle's position, orientation and size).
+enum class SurfaceDetail { Fine, Coarse, None };
+
+/// "fine" | "coarse" | "none"; throws std::invalid_argument listing them.
+SurfaceDetail parse_surface_detail(const std::string& name);
+const char* surface_detail_name(SurfaceDetail detail);
+
 }  // namespace fp

@@ -12,6 +12,7 @@
 
 #include "core/geometry/container.hpp"
 #include "core/geometry/tet_mesh.hpp"
+#include "core/io/output_format.hpp"
 #include "core/sampling/orientation_law.hpp"
 #include "core/sampling/radius_distribution.hpp"
 
@@ -242,6 +243,7 @@ struct SourceSpot {
 struct OutputSpec {
   std::string format;  ///< vtu | yade | lammps | csv | json
   std::string path;    ///< relative paths are relative to the working directory
+  SurfaceDetail surfaces = SurfaceDetail::Fine;  ///< vtu of shapes: its surfaces side file
   SourceSpot spot;     ///< where `path` was written (empty file for -o)
 };
 

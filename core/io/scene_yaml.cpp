@@ -704,12 +704,12 @@ void parse_regions(const Value& v, Scene& scene) {
   }
 }
 
-std::vector<OutputSpec> parse_outputs(const Value& v) {
+std::vector<OutputSpec> parse_outputs(const Value& v, bool shapes) {
   if (!v.node().IsSequence()) v.fail("expected a list of {format, path} entries, got " + shown(v.node()));
   std::vector<OutputSpec> out;
   for (const auto& item : v.list()) {
     const Map m = item.map();
-    m.check_known({"format", "path"});
+    m.check_known({"format", "path", "surfaces"});
     const Value path = m.get("path", "the file to write");
     OutputSpec spec;
     spec.path = path.string();
@@ -729,6 +729,11 @@ std::vector<OutputSpec> parse_outputs(const Value& v) {
       } catch (const std::invalid_argument& e) {
         path.fail(std::string(e.what()) + "; or give 'format'");
       }
+    }
+    if (auto s = m.find("surfaces")) {
+      spec.surfaces = parse_surface_detail(s->choice({"fine", "coarse", "none"}));
+      if (spec.format != "vtu") s->fail("the surfaces side file is written beside a vtu output only (this one is " + spec.format + ")");
+      if (!shapes) s->fail("spheres have no surfaces side file (it draws particles of other shapes)");
     }
     out.push_back(spec);
   }
@@ -1103,7 +1108,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name, const
       if (!(scene.density > 0) || !std::isfinite(scene.density))
         rho.fail("must be a positive number: mass per unit volume of the scene's length unit (got " + excerpt(rho.node().Scalar()) + ")");
     }
-    if (auto o = root.find("output")) scene.outputs = parse_outputs(*o);
+    if (auto o = root.find("output")) scene.outputs = parse_outputs(*o, !scene.particle_templates.empty());
   } catch (const YAML::Exception& e) {  // not expected: every access is checked first
     ctx.fail(e.mark, "", e.msg);
   }

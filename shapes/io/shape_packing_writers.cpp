@@ -150,9 +150,9 @@ std::vector<int> weld(const std::vector<Vec2>& v, double tol) {
 }
 
 template <int D>
-void particle_cells(const Particle<D>& q, std::size_t index, LocalCells& out) {
+void particle_cells(const Particle<D>& q, std::size_t index, int resolution, LocalCells& out) {
   out.clear();
-  const SurfaceMesh<D> m = q.shape->surface(kShapeSurfaceResolution<D>);
+  const SurfaceMesh<D> m = q.shape->surface(resolution);
   const int nv = static_cast<int>(m.vertices.size());
   for (const auto& v : m.vertices) out.points.push_back(embed<D>(q.pose.to_world(v)));
   for (const auto& f : m.facets)
@@ -222,13 +222,13 @@ void particle_cells(const Particle<D>& q, std::size_t index, LocalCells& out) {
 template <int D>
 class Surfaces {
  public:
-  explicit Surfaces(const ShapePacking<D>& p) : p_(p) {
+  Surfaces(const ShapePacking<D>& p, int resolution) : p_(p), resolution_(resolution) {
     constexpr std::size_t kBudget = std::size_t{256} << 20;
     std::size_t bytes = 0;
     bool caching = true;
     cells_per_particle_.reserve(p.size());
     for (std::size_t i = 0; i < p.size(); ++i) {
-      particle_cells(p.particles[i], i, scratch_);
+      particle_cells(p.particles[i], i, resolution_, scratch_);
       n_points += scratch_.points.size();
       n_cells += scratch_.types.size();
       n_connectivity += scratch_.connectivity.size();
@@ -240,7 +240,7 @@ class Surfaces {
   }
   const LocalCells& get(std::size_t i) {
     if (i < cache_.size()) return cache_[i];
-    particle_cells(p_.particles[i], i, scratch_);
+    particle_cells(p_.particles[i], i, resolution_, scratch_);
     return scratch_;
   }
   std::size_t cells_of(std::size_t i) const { return cells_per_particle_[i]; }
@@ -249,14 +249,15 @@ class Surfaces {
 
  private:
   const ShapePacking<D>& p_;
+  int resolution_;
   std::vector<LocalCells> cache_;
   std::vector<std::size_t> cells_per_particle_;
   LocalCells scratch_;
 };
 
 template <int D>
-void write_surfaces_vtu(std::ostream& out, const std::string& path, const ShapePacking<D>& p) {
-  Surfaces<D> s(p);
+void write_surfaces_vtu(std::ostream& out, const std::string& path, const ShapePacking<D>& p, int resolution) {
+  Surfaces<D> s(p, resolution);
   const std::size_t n = p.size();
   using S = VtuArray;
   std::vector<VtuArray> a;
@@ -588,8 +589,8 @@ std::string surfaces_path(const std::string& path) { return with_suffix(path, ".
 
 std::string multisphere_path(const std::string& path) { return with_suffix(path, ".multisphere.txt"); }
 
-std::vector<std::string> companion_paths(OutputFormat format, const std::string& path) {
-  if (format == OutputFormat::Vtu) return {surfaces_path(path)};
+std::vector<std::string> companion_paths(OutputFormat format, const std::string& path, SurfaceDetail surfaces) {
+  if (format == OutputFormat::Vtu) return surfaces == SurfaceDetail::None ? std::vector<std::string>{} : std::vector<std::string>{surfaces_path(path)};
   if (format == OutputFormat::Lammps) return {multisphere_path(path)};
   return {};
 }
@@ -611,7 +612,7 @@ void check_shape_format(OutputFormat format, const std::vector<std::string>& fam
 
 template <int D>
 void write_packing(OutputFormat format, const std::string& path, const ShapePacking<D>& packing,
-                         const RunRecord& record) {
+                         const RunRecord& record, SurfaceDetail surfaces) {
   std::vector<std::string> kinds;
   for (std::size_t i = 0; i < packing.size(); ++i) {
     const auto& q = packing.particles[i];
@@ -630,9 +631,13 @@ void write_packing(OutputFormat format, const std::string& path, const ShapePack
   try {
     switch (format) {
       case OutputFormat::Vtu:
-        write_pair(path, surfaces_path(path), [&](std::ostream& main, std::ostream& surfaces) {
+        if (surfaces == SurfaceDetail::None) {
+          write_file_atomically(path, [&](std::ostream& out) { write_centres_vtu(out, path, packing); });
+          break;
+        }
+        write_pair(path, surfaces_path(path), [&](std::ostream& main, std::ostream& side) {
           write_centres_vtu(main, path, packing);
-          write_surfaces_vtu(surfaces, surfaces_path(path), packing);
+          write_surfaces_vtu(side, surfaces_path(path), packing, surface_resolution<D>(surfaces));
         });
         break;
       case OutputFormat::Lammps:
@@ -653,8 +658,8 @@ void write_packing(OutputFormat format, const std::string& path, const ShapePack
   }
 }
 
-template void write_packing<2>(OutputFormat, const std::string&, const ShapePacking<2>&, const RunRecord&);
-template void write_packing<3>(OutputFormat, const std::string&, const ShapePacking<3>&, const RunRecord&);
+template void write_packing<2>(OutputFormat, const std::string&, const ShapePacking<2>&, const RunRecord&, SurfaceDetail);
+template void write_packing<3>(OutputFormat, const std::string&, const ShapePacking<3>&, const RunRecord&, SurfaceDetail);
 template void check_shape_format<2>(OutputFormat, const std::vector<std::string>&);
 template void check_shape_format<3>(OutputFormat, const std::vector<std::string>&);
 

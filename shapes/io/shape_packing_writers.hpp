@@ -22,8 +22,8 @@
 // * vtu: "<path>": one VTK_VERTEX per particle centre; point data id, shape_id (Int64), size,
 //   bounding_radius, measure (Float64), quaternion (4 components w x y z), axis_x, axis_y,
 //   axis_z (3 components each: the body axes in the world, rotation * e_k; handy for glyphs).
-//   Companion "<stem>.surfaces.vtu" (surfaces_path()): every particle's surface(kShapeSurfaceResolution) in the
-//   world frame: 3D one VTK_TRIANGLE per facet; 2D one VTK_POLYGON per closed loop of the
+//   Companion "<stem>.surfaces.vtu" (surfaces_path()): every particle's surface(kShapeSurfaceResolution,
+//   half of it with SurfaceDetail::Coarse; no companion with None) in the world frame: 3D one VTK_TRIANGLE per facet; 2D one VTK_POLYGON per closed loop of the
 //   outline (the outline's segments are chained, points that coincide up to 1e-9 of the
 //   bounding radius welded: one polygon per particle for a convex shape or a connected
 //   cluster, one per separate piece otherwise; a chain that does not close becomes a
@@ -69,14 +69,21 @@ namespace fp {
 template <int D>
 inline constexpr int kShapeSurfaceResolution = D == 2 ? 24 : 12;
 
-/// Writes `packing` to `path` (and its companion, see above) in `format`. `record` supplies the
+/// The segments per turn of a surfaces side file of that detail: kShapeSurfaceResolution, or
+/// half of it for Coarse.
+template <int D>
+constexpr int surface_resolution(SurfaceDetail detail) {
+  return detail == SurfaceDetail::Coarse ? kShapeSurfaceResolution<D> / 2 : kShapeSurfaceResolution<D>;
+}
+
+/// Writes `packing` to `path` (and its companion, see above; `surfaces`: how finely a vtu's) in `format`. `record` supplies the
 /// run record of the JSON, the LAMMPS box (record.bounds, else the member balls' bounding box)
 /// and density, and the version named in headers.
 /// Throws std::invalid_argument (naming the path, nothing written) if `format` cannot represent
 /// these particles, and std::runtime_error naming the path on any other failure.
 template <int D>
 void write_packing(OutputFormat format, const std::string& path, const ShapePacking<D>& packing,
-                         const RunRecord& record);
+                         const RunRecord& record, SurfaceDetail surfaces = SurfaceDetail::Fine);
 
 /// Throws std::invalid_argument with a clear message if `format` cannot represent particles of
 /// the shape `families` (family / kind names such as "sphere", "cluster", "spherocylinder"):
@@ -86,9 +93,10 @@ void write_packing(OutputFormat format, const std::string& path, const ShapePack
 template <int D>
 void check_shape_format(OutputFormat format, const std::vector<std::string>& families);
 
-/// Every file besides `path` that an output of `format` writes (its companion, if any): the
+/// Every file besides `path` that an output of `format` (and surface detail) writes (its companion, if any): the
 /// commands check them like the outputs themselves, before packing.
-std::vector<std::string> companion_paths(OutputFormat format, const std::string& path);
+std::vector<std::string> companion_paths(OutputFormat format, const std::string& path,
+                                         SurfaceDetail surfaces = SurfaceDetail::Fine);
 
 /// The surfaces companion of a vtu output: "out/capsules.vtu" -> "out/capsules.surfaces.vtu".
 std::string surfaces_path(const std::string& path);

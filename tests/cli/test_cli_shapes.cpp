@@ -115,6 +115,47 @@ TEST_P(CliShapes, SameSeedSameCsv) {
   EXPECT_EQ(a, read_bytes(dir.work() / "d.csv"));
 }
 
+// The surfaces side file: fine (the default), coarse (half the segments per turn), none; the
+// particles' own vtu the same bytes whatever its side file; the coarse one read by VTK.
+TEST_P(CliShapes, SurfacesFineCoarseOrNone) {
+  const int D = GetParam();
+  TempDir dir;
+  write_bytes(dir.work() / "caps.yaml", capsule_scene(D, 40));
+  for (const char* detail : {"fine", "coarse", "none"}) {
+    fs::create_directories(dir.work() / detail);
+    const std::string out = std::string(detail) + "/c.vtu";
+    const RunResult r = run_frontpack(dir, "pack caps.yaml -o " + out + " --surfaces " + detail);
+    ASSERT_EQ(r.exit_code, kIncomplete) << r.out << r.err;
+    EXPECT_EQ(r.out.find(std::string(detail) + "/c.surfaces.vtu") != std::string::npos, std::string(detail) != "none") << r.out;
+  }
+  const std::string fine = read_bytes(dir.work() / "fine/c.surfaces.vtu"), coarse = read_bytes(dir.work() / "coarse/c.surfaces.vtu");
+  EXPECT_LT(coarse.size(), fine.size() * (D == 3 ? 0.4 : 0.6));
+  EXPECT_FALSE(fs::exists(dir.work() / "none/c.surfaces.vtu"));
+  EXPECT_EQ(read_bytes(dir.work() / "none/c.vtu"), read_bytes(dir.work() / "fine/c.vtu"));
+  EXPECT_EQ(read_bytes(dir.work() / "coarse/c.vtu"), read_bytes(dir.work() / "fine/c.vtu"));
+  EXPECT_EQ(python("import sys, vtk\n"
+                   "r = vtk.vtkXMLUnstructuredGridReader(); r.SetFileName(sys.argv[1]); r.Update()\n"
+                   "g = r.GetOutput(); ids = {int(g.GetCellData().GetArray('id').GetValue(c)) for c in range(g.GetNumberOfCells())}\n"
+                   "assert ids == set(range(40)), sorted(ids)[:5]",
+                   dir.work() / "coarse/c.surfaces.vtu"),
+            0);
+  // In the scene's output list too; refused where there is no surfaces file.
+  std::string listed = capsule_scene(D, 40);
+  listed.replace(listed.find("{format: vtu, path: out/caps.vtu}"), 33, "{format: vtu, path: out/caps.vtu, surfaces: none}");
+  write_bytes(dir.work() / "listed.yaml", listed);
+  fs::create_directories(dir.work() / "out");
+  ASSERT_EQ(run_frontpack(dir, "pack listed.yaml -q").exit_code, kIncomplete);
+  EXPECT_TRUE(fs::exists(dir.work() / "out/caps.vtu"));
+  EXPECT_FALSE(fs::exists(dir.work() / "out/caps.surfaces.vtu"));
+  std::string on_csv = capsule_scene(D, 40);
+  on_csv.replace(on_csv.find("{format: csv, path: out/caps.csv}"), 33, "{format: csv, path: out/caps.csv, surfaces: coarse}");
+  expect_refused(dir, on_csv, "beside a vtu output only");
+  const RunResult spheres = run_frontpack(dir, "pack " + quoted(source_path("scenes/demo.yaml")) + " -o s.vtu --surfaces coarse");
+  EXPECT_EQ(spheres.exit_code, 2);
+  EXPECT_NE(spheres.err.find("spheres have no surfaces side file"), std::string::npos) << spheres.err;
+  EXPECT_NE(run_frontpack(dir, "pack caps.yaml -o x.vtu --surfaces rough").exit_code, 0);
+}
+
 TEST_P(CliShapes, YadeCannotHoldCapsules) {
   const int D = GetParam();
   TempDir dir;

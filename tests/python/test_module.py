@@ -132,6 +132,24 @@ def test_figures_are_the_command_lines(tmp_path):
         frontpack.analyze(p, plots=tmp_path / "none")
 
 
+def test_the_surfaces_side_file_fine_coarse_or_none(tmp_path):
+    caps = dict(BOX, container={"type": "box", "min": [0, 0, 0], "max": [1, 1, 1]},
+                particles=[{"shape": "spherocylinder", "elongation": 2,
+                            "size": {"distribution": "uniform", "min": 0.1, "max": 0.12}}])
+    p = frontpack.pack(caps)
+    sizes = {}
+    for detail in ("fine", "coarse", "none"):
+        p.write(tmp_path / f"{detail}.vtu", surfaces=detail)
+        side = tmp_path / f"{detail}.surfaces.vtu"
+        assert side.exists() == (detail != "none")
+        sizes[detail] = side.stat().st_size if side.exists() else 0
+    assert 0 < sizes["coarse"] < 0.4 * sizes["fine"]
+    with pytest.raises(ValueError, match="fine, coarse, none"):
+        p.write(tmp_path / "x.vtu", surfaces="rough")
+    with pytest.raises(ValueError, match="beside a vtu output"):
+        p.write(tmp_path / "x.csv", surfaces="coarse")
+
+
 def test_arrays_are_read_only_views_that_keep_the_packing(box_run):
     _, _, p = box_run
     radii = p.radii
