@@ -87,10 +87,9 @@ std::vector<std::vector<std::array<double, 2>>> outline(const Particle<2>& p, co
 template <int D>
 std::vector<PackingSection> shape_sections(const ShapePacking<D>& packing, const Container<D>& container, int grid) {
   std::vector<PackingSection> out = section_planes<D>(container, packing.origin, grid);
-  const Aabb<D> bounds = container.bounds();
   for (PackingSection& s : out) {
     const int k = s.normal_axis, U = s.u_axis, V = s.v_axis;
-    const double c = D == 3 ? (bounds.lo[k] + bounds.hi[k]) / 2 : 0.0;  // the plane in the packing's frame
+    const double c = s.local_offset;
     for (std::size_t i = 0; i < packing.particles.size(); ++i) {
       const Particle<D>& p = packing.particles[i];
       if (!p.pose.position.allFinite()) continue;

@@ -49,6 +49,7 @@ std::vector<PackingSection> section_planes(const Container<D>& container, const 
     s.normal_axis = D == 3 ? k : 2;
     s.u_axis = D == 3 ? (k == 0 ? 1 : 0) : 0;
     s.v_axis = D == 3 ? (k == 2 ? 1 : 2) : 1;
+    s.local_offset = D == 3 ? middle[k] : 0.0;
     s.offset = D == 3 ? middle[k] + origin[k] : 0.0;
     const int U = s.u_axis, V = s.v_axis;
     // The outline on the bounds padded by 2 % (a boundary on the bounds still changes sign).
@@ -71,10 +72,9 @@ std::vector<PackingSection> section_planes(const Container<D>& container, const 
 template <int D>
 std::vector<PackingSection> packing_sections(const Packing<D>& packing, const Container<D>& container, int grid) {
   std::vector<PackingSection> out = section_planes<D>(container, packing.origin, grid);
-  const Aabb<D> bounds = container.bounds();
   for (PackingSection& s : out) {
     const int k = s.normal_axis, U = s.u_axis, V = s.v_axis;
-    const double c = D == 3 ? (bounds.lo[k] + bounds.hi[k]) / 2 : 0.0;  // the plane in the packing's frame, as section_planes has it
+    const double c = s.local_offset;
     for (std::size_t i = 0; i < packing.size(); ++i) {
       const double r = packing.radii[i];
       if (!std::isfinite(r) || !packing.centers[i].allFinite()) continue;

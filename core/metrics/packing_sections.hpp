@@ -34,6 +34,7 @@ struct PackingSection {
   /// drawn in x, y); in 2D 2, the packing's own plane.
   int normal_axis = 2;
   double offset = 0.0;  ///< the plane's coordinate along its normal (absolute; 0 in 2D)
+  double local_offset = 0.0;  ///< the same in the packing's frame (exactly, not offset less the origin)
   int u_axis = 0, v_axis = 1;
   std::vector<SectionDisk> disks;
   std::vector<SectionPolygon> polygons;
