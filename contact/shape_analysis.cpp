@@ -146,7 +146,11 @@ PackingAnalysis analyze_shape_packing(const ShapePacking<D>& packing, const Cont
     QmcOptions per_shell = options.qmc;
     per_shell.max_ball_points = std::min<std::size_t>(per_shell.max_ball_points, std::size_t{1} << 17);
     a.wall_profile = wall_profile<D>(bodies, container, 2.0 * bounding_max / kWallShells, kWallShells, per_shell);
-    if (const auto* bed = dynamic_cast<const BedRegion<D>*>(&container)) a.bed = bed_profile<D>(bodies, *bed, bounding_max, per_shell);
+    if (const auto* bed = dynamic_cast<const BedRegion<D>*>(&container)) {
+      std::vector<double> tops;  // each particle's highest point, by its support function along up
+      for (const Particle<D>& q : ps) tops.push_back(bed->up().dot(q.support(bed->up())));
+      a.bed = bed_profile<D>(bodies, *bed, bounding_max, per_shell, tops);
+    }
     // Per cell, each particle as its ball of the same volume (cells are many diameters wide).
     a.vf_cells = cell_volume_fraction_auto(balls, container, a.r_mean, bounding_max);
   });

@@ -74,6 +74,54 @@ void summarise(BedProfile& p, const std::vector<double>& edges, const std::vecto
   }
 }
 
+/// The highest top over the columns of 4 r_max across `up` (a lattice in a frame of the plane)
+/// that are clear of the walls: a column counts when its corners, 2 r_max under the level, lie a
+/// radius inside the walls (the columns the walls cut short hold the few particles that fit
+/// there and say nothing of the top). `tops[i]`: particle i's highest point above the floor.
+template <int D>
+BedSurfaceTops surface_tops(const std::vector<Vec<D>>& centres, const std::vector<double>& tops, const BedRegion<D>& bed,
+                            double r_max) {
+  Eigen::Matrix<double, D, D - 1> across;
+  if constexpr (D == 3) {
+    const Vec3 a = bed.up().unitOrthogonal();
+    across.col(0) = a;
+    across.col(1) = bed.up().cross(a);
+  } else {
+    across.col(0) = Vec2(-bed.up().y(), bed.up().x());
+  }
+  const double column = 4.0 * r_max;
+  std::map<std::array<long long, D - 1>, double> highest;
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    if (!centres[i].allFinite() || !std::isfinite(tops[i])) continue;
+    std::array<long long, D - 1> key;
+    const Eigen::Matrix<double, D - 1, 1> at = across.transpose() * centres[i];
+    for (int a = 0; a < D - 1; ++a) key[static_cast<std::size_t>(a)] = static_cast<long long>(std::floor(at[a] / column));
+    auto [it, added] = highest.emplace(key, tops[i]);
+    if (!added) it->second = std::max(it->second, tops[i]);
+  }
+  for (auto it = highest.begin(); it != highest.end();) {
+    bool inside = true;
+    for (int corner = 0; corner < (1 << (D - 1)) && inside; ++corner) {
+      Vec<D> at = (bed.level() - 2.0 * r_max) * bed.up();
+      for (int a = 0; a < D - 1; ++a)
+        at += (static_cast<double>(it->first[static_cast<std::size_t>(a)] + ((corner >> a) & 1)) * column) * across.col(a);
+      inside = bed.signed_distance(at) <= -r_max;
+    }
+    it = inside ? std::next(it) : highest.erase(it);
+  }
+  BedSurfaceTops t;
+  if (highest.empty()) return t;
+  t.columns = highest.size();
+  t.min = std::numeric_limits<double>::infinity();
+  t.max = -t.min;
+  double sum = 0.0, sum2 = 0.0;
+  for (const auto& [key, top] : highest) sum += top, t.min = std::min(t.min, top), t.max = std::max(t.max, top);
+  t.mean = sum / static_cast<double>(highest.size());
+  for (const auto& [key, top] : highest) sum2 += (top - t.mean) * (top - t.mean);
+  t.std_dev = std::sqrt(sum2 / static_cast<double>(highest.size()));
+  return t;
+}
+
 }  // namespace
 
 double BedProfile::middle(std::size_t k) const { return (static_cast<double>(k) + 0.5) * width; }
@@ -84,17 +132,8 @@ BedProfile bed_profile(const Packing<D>& packing, const BedRegion<D>& bed, doubl
   BedProfile p = slabs_of(bed, r_max, edges, measures);
   const std::size_t slabs = measures.size();
   std::vector<CompensatedSum> solid(slabs);
-  // Columns across `up`: the lattice of 4 r_max in a frame of the plane.
-  Eigen::Matrix<double, D, D - 1> across;
-  if constexpr (D == 3) {
-    const Vec3 a = bed.up().unitOrthogonal();
-    across.col(0) = a;
-    across.col(1) = bed.up().cross(a);
-  } else {
-    across.col(0) = Vec2(-bed.up().y(), bed.up().x());
-  }
-  const double column = 4.0 * r_max;
-  std::map<std::array<long long, D - 1>, double> tops;
+  std::vector<Vec<D>> centres;
+  std::vector<double> tops;
   for (std::size_t i = 0; i < packing.size(); ++i) {
     const double r = packing.radii[i];
     const Vec<D>& c = packing.centers[i];
@@ -103,43 +142,19 @@ BedProfile bed_profile(const Packing<D>& packing, const BedRegion<D>& bed, doubl
     const auto first = static_cast<std::size_t>(std::clamp(std::floor((h - r) / p.width), 0.0, static_cast<double>(slabs - 1)));
     for (std::size_t k = first; k < slabs && edges[k] < h + r; ++k)
       solid[k].add(ball_below<D>(r, edges[k + 1] - h) - ball_below<D>(r, edges[k] - h));
-    std::array<long long, D - 1> key;
-    const Eigen::Matrix<double, D - 1, 1> at = across.transpose() * c;
-    for (int a = 0; a < D - 1; ++a) key[static_cast<std::size_t>(a)] = static_cast<long long>(std::floor(at[a] / column));
-    auto [it, added] = tops.emplace(key, h + r);
-    if (!added) it->second = std::max(it->second, h + r);
+    centres.push_back(c);
+    tops.push_back(h + r);
   }
   std::vector<Estimate> exact;
   for (const CompensatedSum& s : solid) exact.push_back({s.value(), 0.0});
   summarise(p, edges, exact, measures, r_max);
-  // A column counts when its corners, 2 r_max under the level, lie a radius inside the walls: the
-  // columns the walls cut short hold the few particles that fit there and say nothing of the top.
-  for (auto it = tops.begin(); it != tops.end();) {
-    bool inside = true;
-    for (int corner = 0; corner < (1 << (D - 1)) && inside; ++corner) {
-      Vec<D> at = (bed.level() - 2.0 * r_max) * bed.up();
-      for (int a = 0; a < D - 1; ++a)
-        at += (static_cast<double>(it->first[static_cast<std::size_t>(a)] + ((corner >> a) & 1)) * column) * across.col(a);
-      inside = bed.signed_distance(at) <= -r_max;
-    }
-    it = inside ? std::next(it) : tops.erase(it);
-  }
-  if (!tops.empty()) {
-    BedSurfaceTops& t = p.surface;
-    t.columns = tops.size();
-    t.min = std::numeric_limits<double>::infinity();
-    t.max = -t.min;
-    double sum = 0.0, sum2 = 0.0;
-    for (const auto& [key, top] : tops) sum += top, t.min = std::min(t.min, top), t.max = std::max(t.max, top);
-    t.mean = sum / static_cast<double>(tops.size());
-    for (const auto& [key, top] : tops) sum2 += (top - t.mean) * (top - t.mean);
-    t.std_dev = std::sqrt(sum2 / static_cast<double>(tops.size()));
-  }
+  p.surface = surface_tops<D>(centres, tops, bed, r_max);
   return p;
 }
 
 template <int D>
-BedProfile bed_profile(const RegionBodies<D>& bodies, const BedRegion<D>& bed, double r_max, const QmcOptions& qmc) {
+BedProfile bed_profile(const RegionBodies<D>& bodies, const BedRegion<D>& bed, double r_max, const QmcOptions& qmc,
+                       const std::vector<double>& tops) {
   std::vector<double> edges, measures;
   BedProfile p = slabs_of(bed, r_max, edges, measures);
   // The solid below each edge through vf_region of the bed filled to it; a slab's is the difference.
@@ -153,12 +168,19 @@ BedProfile bed_profile(const RegionBodies<D>& bodies, const BedRegion<D>& bed, d
   for (std::size_t k = 0; k + 1 < edges.size(); ++k)
     solid.push_back({below[k + 1].value - below[k].value, std::hypot(below[k + 1].std_error, below[k].std_error)});
   summarise(p, edges, solid, measures, r_max);
+  if (!tops.empty()) {
+    std::vector<double> above_floor;
+    for (const double t : tops) above_floor.push_back(t - bed.floor_level());
+    p.surface = surface_tops<D>(bodies.centres, above_floor, bed, r_max);
+  }
   return p;
 }
 
 template BedProfile bed_profile<2>(const Packing<2>&, const BedRegion<2>&, double);
 template BedProfile bed_profile<3>(const Packing<3>&, const BedRegion<3>&, double);
-template BedProfile bed_profile<2>(const RegionBodies<2>&, const BedRegion<2>&, double, const QmcOptions&);
-template BedProfile bed_profile<3>(const RegionBodies<3>&, const BedRegion<3>&, double, const QmcOptions&);
+template BedProfile bed_profile<2>(const RegionBodies<2>&, const BedRegion<2>&, double, const QmcOptions&,
+                                   const std::vector<double>&);
+template BedProfile bed_profile<3>(const RegionBodies<3>&, const BedRegion<3>&, double, const QmcOptions&,
+                                   const std::vector<double>&);
 
 }  // namespace fp

@@ -9,7 +9,7 @@
 //    neither the floor nor the surface orders the particles; the top layer is the last 2 r_max.
 //  * The half-bulk height is where the profile, read down from the level, first reaches half
 //    the bulk: a bed packed to its level has it within a particle radius of the level.
-//  * The surface (spheres): the highest particle top over columns of 4 r_max across `up`, those
+//  * The surface: the highest particle top over columns of 4 r_max across `up`, those
 //    whose corners lie a radius inside the walls 2 r_max under the level; a flat surface has
 //    every column's top within a particle diameter of the level.
 #include <cstdint>
@@ -34,7 +34,7 @@ struct BedProfile {
   Estimate bulk;              ///< the slabs from 2 r_max above the floor to 2 r_max below the level (NaN: none)
   Estimate top_layer;         ///< the last 2 r_max below the level
   double half_bulk_height = 0.0;  ///< NaN without a bulk
-  BedSurfaceTops surface;     ///< spheres only (columns 0 otherwise)
+  BedSurfaceTops surface;     ///< columns 0 without the particles' tops
 
   bool computed() const { return !vf.empty(); }
   /// The height of slab k's middle above the floor.
@@ -46,7 +46,10 @@ inline constexpr int kMaxBedSlabs = 400;
 
 template <int D>
 BedProfile bed_profile(const Packing<D>& packing, const BedRegion<D>& bed, double r_max);
+/// Particles of any shape; `tops` (one per body, or none): each one's highest point along `up`
+/// (up . x, the bed's frame), for the surface figure.
 template <int D>
-BedProfile bed_profile(const RegionBodies<D>& bodies, const BedRegion<D>& bed, double r_max, const QmcOptions& qmc = {});
+BedProfile bed_profile(const RegionBodies<D>& bodies, const BedRegion<D>& bed, double r_max, const QmcOptions& qmc = {},
+                       const std::vector<double>& tops = {});
 
 }  // namespace fp

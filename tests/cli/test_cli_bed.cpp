@@ -250,6 +250,7 @@ TEST(CliBedDirections, DrumBowlAndShapesStayBelowTheirLevel) {
   const RunResult r = run_frontpack(dir, "pack s.yaml -o p.json");
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("bed bulk / top"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("bed surface          highest tops over"), std::string::npos) << r.out;  // by the support function
   EXPECT_EQ(run_frontpack(dir, "validate p.json --scene s.yaml -q").exit_code, 0);
 }
 

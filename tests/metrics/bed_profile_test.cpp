@@ -109,7 +109,15 @@ TEST(BedProfile, BodiesOfAnyShapeAgreeWithTheClosedFormWithinTheirError) {
   }
   EXPECT_GT(largest_error, 0.0);
   EXPECT_NEAR(sampled.bulk.value, exact.bulk.value, 5 * sampled.bulk.std_error + 1e-12);
-  EXPECT_EQ(sampled.surface.columns, 0u);  // tops are measured for spheres only
+  EXPECT_EQ(sampled.surface.columns, 0u);  // without the particles' tops, no surface figure
+  // With them (each sphere's centre height plus its radius), the spheres' own surface figure.
+  std::vector<double> tops;
+  for (std::size_t i = 0; i < p.size(); ++i) tops.push_back(p.centers[i].z() + p.radii[i]);
+  const BedProfile topped = bed_profile<3>(bodies, bed, r_max, QmcOptions{}, tops);
+  EXPECT_GT(topped.surface.columns, 0u);
+  EXPECT_EQ(topped.surface.columns, exact.surface.columns);
+  EXPECT_DOUBLE_EQ(topped.surface.mean, exact.surface.mean);
+  EXPECT_DOUBLE_EQ(topped.surface.min, exact.surface.min);
 }
 
 }  // namespace
