@@ -168,13 +168,19 @@ ContainerPtr<2> parse_polygon(const Map& m, const std::optional<Vec2>& origin) {
   return construct(m, [&] { return std::make_shared<const PolygonContainer>(vertices, origin.value_or(frame_origin<2>(box))); });
 }
 
+/// A path written in the scene file: relative to the scene file's folder, as every path in a
+/// file is, so a scene writes and reads the same files from whatever folder it is run.
+std::string scene_relative(const Context& ctx, const std::string& name) {
+  const std::filesystem::path p(name);
+  return (p.is_absolute() ? p : (ctx.folder / p)).lexically_normal().string();
+}
+
 ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx, const std::optional<Vec3>& origin) {
   const Value file = m.get("file", "an STL, OFF or OBJ surface or a Gmsh .msh tetrahedral mesh, relative to the scene file's folder");
   const std::string name = file.string();
   if (name.empty()) file.fail("must name a file");
   if (name.find('\0') != std::string::npos) file.fail("the file name contains a NUL byte");
-  const std::filesystem::path p(name);
-  const std::string resolved = (p.is_absolute() ? p : (ctx.folder / p)).lexically_normal().string();
+  const std::string resolved = scene_relative(ctx, name);
   if (const std::string problem = input_file_problem(resolved); !problem.empty())
     file.fail("mesh file '" + resolved + "' " + problem);
   {
@@ -190,7 +196,7 @@ ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx, const std::optional
   double scale = 1.0;
   if (auto s = m.find("scale")) scale = s->positive();
   if (ctx.read_files) ctx.read_files->push_back(resolved);
-  std::string extension = p.extension().string();
+  std::string extension = std::filesystem::path(name).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
   if (extension == ".msh")  // a tetrahedral mesh: its boundary is the container, its tetrahedra stay with the scene
     return construct(m, [&]() -> ContainerPtr<3> {
@@ -704,7 +710,7 @@ void parse_regions(const Value& v, Scene& scene) {
   }
 }
 
-std::vector<OutputSpec> parse_outputs(const Value& v, bool shapes) {
+std::vector<OutputSpec> parse_outputs(const Value& v, const Context& ctx, bool shapes) {
   if (!v.node().IsSequence()) v.fail("expected a list of {format, path} entries, got " + shown(v.node()));
   std::vector<OutputSpec> out;
   for (const auto& item : v.list()) {
@@ -715,6 +721,7 @@ std::vector<OutputSpec> parse_outputs(const Value& v, bool shapes) {
     spec.path = path.string();
     if (spec.path.empty()) path.fail("must not be empty");
     if (spec.path.find('\0') != std::string::npos) path.fail("the path contains a NUL byte");
+    spec.path = scene_relative(ctx, spec.path);
     spec.spot = path.spot();
     if (auto f = m.find("format")) {
       const std::string name = f->string();
@@ -1108,7 +1115,7 @@ Scene parse_scene(const std::string& text, const std::string& source_name, const
       if (!(scene.density > 0) || !std::isfinite(scene.density))
         rho.fail("must be a positive number: mass per unit volume of the scene's length unit (got " + excerpt(rho.node().Scalar()) + ")");
     }
-    if (auto o = root.find("output")) scene.outputs = parse_outputs(*o, !scene.particle_templates.empty());
+    if (auto o = root.find("output")) scene.outputs = parse_outputs(*o, ctx, !scene.particle_templates.empty());
   } catch (const YAML::Exception& e) {  // not expected: every access is checked first
     ctx.fail(e.mark, "", e.msg);
   }

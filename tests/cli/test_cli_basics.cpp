@@ -111,6 +111,37 @@ TEST(CliBasics, SeveralOutputsEachInTheFormatOfItsExtension) {
   EXPECT_EQ(read_bytes(dir.work() / "alone.csv"), read_bytes(dir.work() / "p.csv"));
 }
 
+// One rule for relative paths: a path written in the scene file (its outputs, its mesh) is
+// relative to the scene file's folder; a path on the command line to the working directory.
+TEST(CliBasics, PathsInTheSceneAreTheScenesAndOnTheCommandLineTheWorkingDirectorys) {
+  TempDir dir;
+  fs::create_directories(dir.work() / "scenes" / "out");
+  fs::create_directories(dir.work() / "elsewhere");
+  fs::copy_file(source_path("tests/data/meshes/cube.stl"), dir.work() / "scenes" / "cube.stl");
+  write_bytes(dir.work() / "scenes" / "s.yaml", "dimension: 3\nseed: 4\ncontainer: {type: mesh, file: cube.stl, scale: 0.2}\n"
+                                                "particles: {radius: {distribution: uniform, min: 0.02, max: 0.03}}\n"
+                                                "output:\n  - {path: out/p.csv}\n  - {path: ../top.csv}\n");
+  // From the repository's root, from the scene's folder and from a third one: the same files.
+  for (const char* from : {".", "scenes", "elsewhere"}) {
+    const std::string scene = std::string(from) == "." ? "scenes/s.yaml" : std::string(from) == "scenes" ? "s.yaml" : "../scenes/s.yaml";
+    const RunResult r = run_frontpack(dir, "pack " + scene, std::string("cd ") + from);
+    ASSERT_EQ(r.exit_code, 0) << from << "\n" << r.out << r.err;
+    EXPECT_NE(r.out.find("out/p.csv (csv)"), std::string::npos) << r.out;
+    EXPECT_TRUE(fs::exists(dir.work() / "scenes" / "out" / "p.csv")) << from;
+    EXPECT_TRUE(fs::exists(dir.work() / "top.csv")) << from;
+    if (std::string(from) != "scenes") EXPECT_FALSE(fs::exists(dir.work() / from / "out")) << from;
+    EXPECT_EQ(read_bytes(dir.work() / "scenes" / "out" / "p.csv"), read_bytes(dir.work() / "top.csv"));
+    fs::remove(dir.work() / "scenes" / "out" / "p.csv");
+    fs::remove(dir.work() / "top.csv");
+  }
+  // -o and --record: the working directory's.
+  const RunResult r = run_frontpack(dir, "pack ../scenes/s.yaml -o here.csv --record here.json", "cd elsewhere");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir.work() / "elsewhere" / "here.csv"));
+  EXPECT_TRUE(fs::exists(dir.work() / "elsewhere" / "here.json"));
+  EXPECT_FALSE(fs::exists(dir.work() / "scenes" / "here.csv"));
+}
+
 TEST(CliBasics, ProgressFlagWritesToStderrOnly) {
   // --progress forces the progress line even into a file; it appears every 0.5 s, and the
   // time limit keeps the run at 0.8 s (which leaves the packing incomplete).

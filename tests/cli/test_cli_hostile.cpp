@@ -99,7 +99,7 @@ TEST(CliHostileOutputs, OutputIsTheSceneThroughAHardLink) {
 
 TEST(CliHostileOutputs, SceneOutputListNamesTheScene) {
   expect_refused(with_scene("output:\n  - {path: old.csv}\n  - {format: csv, path: ./s.yaml}\n"), "pack s.yaml", 2,
-                 {"s.yaml:6:", "key 'output[1].path'", "'./s.yaml'", "scene file"});
+                 {"s.yaml:6:", "key 'output[1].path'", "output 's.yaml' is the scene file", "scene file"});
 }
 
 TEST(CliHostileOutputs, OutputIsTheContainerMesh) {
@@ -121,7 +121,7 @@ TEST(CliHostileOutputs, TwoOutputsAreTheSameFile) {
 
 TEST(CliHostileOutputs, TwoNewOutputsAreTheSameFile) {
   expect_refused(with_scene("output:\n  - {path: new.csv}\n  - {format: yade, path: ./new.csv}\n"), "pack s.yaml", 2,
-                 {"s.yaml:6:", "'./new.csv'", "same file as output 'new.csv'"});
+                 {"s.yaml:6:", "output 'new.csv' is the same file as output 'new.csv'"});
 }
 
 TEST(CliHostileOutputs, RecordIsAnOutput) {

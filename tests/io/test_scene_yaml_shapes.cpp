@@ -319,7 +319,7 @@ TEST(SceneYamlShapes, ShapeScenesOfTheRepositoryParse) {
   EXPECT_EQ(p.particle_templates[0].size->r_max(), 2.0);
   EXPECT_EQ(p.container2->bounds().size(), Vec2(20, 20));
   ASSERT_EQ(p.outputs.size(), 3u);
-  EXPECT_EQ(p.outputs[0].path, "out/perez-capsules-2d.vtu");
+  EXPECT_EQ(p.outputs[0].path, std::string(FRONTPACK_SOURCE_DIR) + "/out/perez-capsules-2d.vtu");  // ../out/ from scenes/
   EXPECT_EQ(load_scene(dir + "perez-capsules-3d.yaml").container3->bounds().size(), Vec3(40, 40, 40));
 }
 
