@@ -16,9 +16,10 @@ if [[ "${1:-}" == "--test" ]]; then
   # libopenmpi-dev, openmpi-bin: the test build has FRONTPACK_MPI on (mpirun -np 2 and 3 are tested).
   # lammps: the LAMMPS data files are read and run by LAMMPS itself (about 10 s to install).
   # yade: the YADE text files (spheres, clumps) are loaded and run by YADE itself (about 60 s).
+  # liggghts: the same data files run in LIGGGHTS as the README writes it (about 50 s).
   # pybind11-dev, python3-pytest: the Python module frontpack and its tests (13 s to install).
   packages+=(libgtest-dev libgmock-dev libbenchmark-dev python3 python3-numpy python3-vtk9 python3-matplotlib pybind11-dev python3-pytest
-             libopenmpi-dev openmpi-bin lammps yade)
+             libopenmpi-dev openmpi-bin lammps yade liggghts)
 fi
 missing=()
 for p in "${packages[@]}"; do

@@ -500,9 +500,11 @@ void write_lammps(std::ostream& data, std::ostream& clumps, const std::string& p
   TextBuffer b(data);
   b.text("LAMMPS data file (atom_style hybrid sphere bond) written by ").text(producer(rec)).text(", ");
   b.text(D == 2 ? "2D (use 'dimension 2')" : "3D").text(", columns: id type x y z diameter density molecule").ch('\n');
-  b.text("# each atom is a member ball of a clump: molecule = clump id + 1, so that 'fix rigid/small molecule' runs the");
-  b.text(" clumps as they are (README); the clumps are also listed in '").text(companion);
-  b.text("': atoms come in clump order (clump 0's members first), type = shape_id + 1 (particle template)").ch('\n');
+  // Lines stay short: LIGGGHTS 3.8 reads at most 256 characters a line and aborts without a word beyond.
+  b.text("# each atom is a member ball of a clump: molecule = clump id + 1, so that 'fix rigid/small molecule'").ch('\n');
+  b.text("# (LIGGGHTS: fix rigid molecule) runs the clumps as they are (README); the clumps are also listed in").ch('\n');
+  b.text("# '").text(companion).text("': atoms come in clump order (clump 0's members first),").ch('\n');
+  b.text("# type = shape_id + 1 (particle template)").ch('\n');
   b.ch('\n');
   b.integer(n_balls).text(" atoms").ch('\n');
   b.integer(static_cast<std::int64_t>(n_types)).text(" atom types").ch('\n');
