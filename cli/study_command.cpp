@@ -88,7 +88,8 @@ void check_study_writes(const StudySpec& spec, const std::vector<StudyRun>& runs
     if (!ec && fs::exists(p, ec) && !fs::is_directory(p, ec))
       throw OutputPathError(where + ": '" + p.string() + "' is a file, not a folder; give 'output:' a folder");
   }
-  std::vector<NamedPath> writes{{(out / "results.csv").string(), where, "results table"}};
+  std::vector<NamedPath> writes{{(out / "results.csv").string(), where, "results table"},
+                                {(out / "results-full.csv").string(), where, "full results table"}};
   if (plots) {
     writes.push_back({(out / "plots.json").string(), where, "figure request"});
     writes.push_back({(out / "plots" / "figures.txt").string(), where, "list of figures"});
@@ -115,13 +116,14 @@ void check_study_writes(const StudySpec& spec, const std::vector<StudyRun>& runs
   check_distinct_files(writes, reads);
 }
 
-/// What the plot script needs besides the CSV: the parameters (their values in order, numeric
-/// or not) and the figures asked for.
+/// What the plot script needs besides the CSV: the parameters (their values in order, and each
+/// value's number on a numeric axis) and the figures asked for.
 std::string plot_request(const StudySpec& spec) {
   nlohmann::ordered_json j;
   j["parameters"] = nlohmann::json::array();
   for (const auto& p : spec.parameters) {
-    nlohmann::ordered_json par{{"name", p.name}, {"numeric", p.numeric}, {"values", nlohmann::json::array()}};
+    nlohmann::ordered_json par{{"name", p.name}, {"numeric", p.numeric}, {"axis_label", p.axis_label},
+                               {"values", nlohmann::json::array()}, {"axis", p.axis}};
     for (const auto& l : p.levels) par["values"].push_back(l.label);
     j["parameters"].push_back(par);
   }
@@ -192,6 +194,11 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o) {
   StudyOutcome out;
   out.runs = runs.size();
   out.csv_path = (fs::path(spec.output_dir) / "results.csv").string();
+  out.full_csv_path = (fs::path(spec.output_dir) / "results-full.csv").string();
+  const auto write_tables = [&] {
+    write_text_file_atomically(out.full_csv_path, study_csv(out.rows));
+    write_text_file_atomically(out.csv_path, study_short_csv(spec, out.rows));
+  };
   out.rows.resize(runs.size());
   std::size_t ended = 0;
   const auto finish = [&](std::size_t i, const std::string& record, const std::string& failure) {
@@ -225,7 +232,7 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o) {
       waiting.push_back(i);
     }
   }
-  if (out.kept > 0) write_text_file_atomically(out.csv_path, study_csv(out.rows));
+  if (out.kept > 0) write_tables();
 
   const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const int jobs = o.jobs > 0 ? o.jobs : spec.jobs > 0 ? spec.jobs : std::max(1, hardware / spec.threads);
@@ -262,12 +269,12 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o) {
       } else {
         finish(i, "", "exit " + std::to_string(code) + ": " + last_line(files.log));
       }
-      write_text_file_atomically(out.csv_path, study_csv(out.rows));
+      write_tables();
       it = running.erase(it);
     }
   }
-  write_text_file_atomically(out.csv_path, study_csv(out.rows));
-  if (o.plots) out.plots = draw_plots(spec, o, out.csv_path, out.plots_problem);
+  write_tables();
+  if (o.plots) out.plots = draw_plots(spec, o, out.full_csv_path, out.plots_problem);
   return out;
 }
 
@@ -298,7 +305,7 @@ int run_study_command(const std::string& study_path, StudyOptions options) {
   if (!options.quiet) {
     std::printf("frontpack study   %s: %zu runs (%zu kept from before, %zu run now), %zu invalid, %zu incomplete, %zu failed\n",
                 study_path.c_str(), out.runs, out.kept, out.ran, out.invalid, out.incomplete, out.failed);
-    std::printf("  table          %s\n", out.csv_path.c_str());
+    std::printf("  table          %s (main figures; every figure in %s)\n", out.csv_path.c_str(), out.full_csv_path.c_str());
     if (!out.plots.empty()) std::printf("  figures        %s (%zu)\n", (fs::path(spec.output_dir) / "plots").string().c_str(), out.plots.size());
   }
   if (!out.plots_problem.empty()) std::fprintf(stderr, "frontpack: error: no figures: %s\n", out.plots_problem.c_str());

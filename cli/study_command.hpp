@@ -3,7 +3,8 @@
 // (core/io/study_yaml.hpp) packed by the frontpack command in its own process, `jobs` at once,
 // into OUTPUT/runs/<run>/ (record.json, the packing, log.txt); runs whose record is already
 // there are kept (a study killed and started again goes on where it was); OUTPUT/results.csv,
-// one row per run (cli/study_table.hpp), rewritten as each run ends; the standard figures in
+// one row per run with its main figures, and OUTPUT/results-full.csv with every figure
+// (cli/study_table.hpp), rewritten as each run ends; the standard figures in
 // OUTPUT/plots (python/plot_study.py, Debian's python3-matplotlib).
 #include <cstddef>
 #include <functional>
@@ -29,7 +30,8 @@ struct StudyOptions {
 };
 
 struct StudyOutcome {
-  std::string csv_path;
+  std::string csv_path;            ///< the main figures (results.csv)
+  std::string full_csv_path;       ///< every figure of every run (results-full.csv)
   std::vector<std::string> plots;  ///< the figures drawn
   std::string plots_problem;       ///< why there are none, when plots were asked for
   std::size_t runs = 0, kept = 0, ran = 0, invalid = 0, incomplete = 0, failed = 0;

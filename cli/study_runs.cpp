@@ -43,7 +43,7 @@ std::vector<StudyRun> study_runs(const StudySpec& spec) {
       for (std::size_t p = 0; p < spec.parameters.size(); ++p) {
         const StudyParameter& par = spec.parameters[p];
         const StudyLevel& level = par.levels[levels[p]];
-        run.name += file_name_part(par.name) + "=" + file_name_part(level.label) + ",";
+        run.name += file_name_part(par.name_part) + "=" + file_name_part(level.name_part) + ",";
         run.overrides.insert(run.overrides.end(), level.overrides.begin(), level.overrides.end());
         if (!level.scene_path.empty()) run.scene_path = level.scene_path;
       }

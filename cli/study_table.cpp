@@ -2,6 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <set>
 
 #include "cli/pack_check.hpp"
@@ -35,6 +38,22 @@ std::string csv_field(const std::string& s) {
   return out + "\"";
 }
 
+/// The CSV of `rows` with these columns (a run not ended yet, without keys, is left out).
+std::string csv_of(const std::vector<StudyRow>& rows, const std::vector<std::string>& columns) {
+  std::string out;
+  for (std::size_t c = 0; c < columns.size(); ++c) out += (c ? "," : "") + csv_field(columns[c]);
+  out += '\n';
+  for (const auto& row : rows) {
+    if (row.keys.empty()) continue;
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const auto it = row.values.find(columns[c]);
+      out += (c ? "," : "") + csv_field(it == row.values.end() ? std::string() : it->second);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
 }  // namespace
 
 StudyRow study_row(const StudySpec& spec, const StudyRun& run, const std::string& record_text, const std::string& failure) {
@@ -64,15 +83,30 @@ std::string study_csv(const std::vector<StudyRow>& rows) {
   for (const auto& row : rows)
     for (const auto& k : row.keys)
       if (seen.insert(k).second) columns.push_back(k);
-  std::string out;
-  for (std::size_t c = 0; c < columns.size(); ++c) out += (c ? "," : "") + csv_field(columns[c]);
-  out += '\n';
-  for (const auto& row : rows) {
-    if (row.keys.empty()) continue;  // a run not ended yet
-    for (std::size_t c = 0; c < columns.size(); ++c) out += (c ? "," : "") + csv_field(study_value(row, columns[c]));
-    out += '\n';
-  }
-  return out;
+  return csv_of(rows, columns);
+}
+
+std::string study_short_csv(const StudySpec& spec, const std::vector<StudyRow>& rows) {
+  std::vector<std::string> columns{"run"};
+  for (const auto& p : spec.parameters) columns.push_back(p.name);
+  columns.insert(columns.end(), {"seed", "status"});
+  for (const char* figure : kStudyMainFigures)
+    if (std::any_of(rows.begin(), rows.end(), [&](const StudyRow& r) { return r.values.count(figure) > 0; })) columns.push_back(figure);
+  columns.push_back("message");
+  // Figures to read at a glance: 5 significant digits (results-full.csv keeps every digit).
+  std::vector<StudyRow> shown = rows;
+  for (StudyRow& row : shown)
+    for (const char* figure : kStudyMainFigures)
+      if (auto it = row.values.find(figure); it != row.values.end() && it->second.find_first_of(".eE") != std::string::npos) {
+        char* end = nullptr;
+        const double v = std::strtod(it->second.c_str(), &end);
+        if (end != it->second.c_str() && *end == '\0') {
+          char buf[32];
+          std::snprintf(buf, sizeof buf, "%.5g", v);
+          it->second = buf;
+        }
+      }
+  return csv_of(shown, columns);
 }
 
 std::string study_value(const StudyRow& row, const std::string& key) {

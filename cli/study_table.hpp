@@ -25,6 +25,16 @@ StudyRow study_row(const StudySpec& spec, const StudyRun& run, const std::string
 /// Text with a comma, quote or newline is quoted.
 std::string study_csv(const std::vector<StudyRow>& rows);
 
+/// The main figures of each run, to read at a glance: `run`, the parameters, `seed`, `status`,
+/// then those of `kStudyMainFigures` some run has (to 5 significant digits), then `message`.
+std::string study_short_csv(const StudySpec& spec, const std::vector<StudyRow>& rows);
+
+/// The record's figures the short table keeps, in its order.
+inline const char* const kStudyMainFigures[] = {
+    "n", "metrics.volume_fraction_container", "metrics.volume_fraction_core", "metrics.volume_fraction_reference_sphere",
+    "metrics.mean_coordination", "metrics.rattler_fraction", "metrics.orientation_order",
+    "metrics.max_overlap_over_smaller_radius", "metrics.particles_per_second", "timings.pack"};
+
 /// The figure of a column, read back from a row ("" when the run has none).
 std::string study_value(const StudyRow& row, const std::string& key);
 

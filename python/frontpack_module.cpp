@@ -292,6 +292,7 @@ py::dict study(const py::object& source, long long jobs, bool plots, const py::o
   py::dict d;
   d["folder"] = spec.output_dir;
   d["csv"] = out.csv_path;
+  d["full_csv"] = out.full_csv_path;
   d["figures"] = out.plots;
   d["runs"] = out.runs;
   d["kept"] = out.kept;
@@ -432,8 +433,8 @@ PYBIND11_MODULE(frontpack, m) {
         py::arg("progress") = py::none(), py::arg("executable") = py::none(),
         "Runs a study as `frontpack study` does (a path to a study file, or a dict with its schema; a dict's relative "
         "paths start at the working directory): every run in its own frontpack process, `jobs` at once (0: the "
-        "study's), done runs kept. Returns {'folder', 'csv', 'figures', 'runs', 'kept', 'ran', 'invalid', 'incomplete', 'failed', "
-        "'rows'}: rows are the CSV's, as dicts of numbers, flags and text. progress(done, total, row) after each run; "
+        "study's), done runs kept. Returns {'folder', 'csv' (the main figures), 'full_csv' (every figure), 'figures', 'runs', 'kept', 'ran', 'invalid', 'incomplete', 'failed', "
+        "'rows'}: rows are the full CSV's, as dicts of numbers, flags and text. progress(done, total, row) after each run; "
         "an exception in it (or Ctrl-C) stops the study (its runs are killed). executable: the frontpack command "
         "(default: the one built with this module).");
   m.def(

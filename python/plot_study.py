@@ -55,9 +55,10 @@ def save(fig, out_dir, name, drawn):
 
 
 def x_positions(parameter):
-    """The x of each value: the number itself, or its place in the study's order."""
+    """The x of each value: its number (the value, or the entry a list of numbers varies in),
+    or its place in the study's order."""
     if parameter["numeric"]:
-        return {v: float(v) for v in parameter["values"]}
+        return dict(zip(parameter["values"], parameter["axis"]))
     return {v: i for i, v in enumerate(parameter["values"])}
 
 
@@ -96,7 +97,7 @@ def draw_against(ax, rows, parameters, x_name, y_key):
     if not parameter["numeric"]:
         ax.set_xticks(list(xs.values()))
         ax.set_xticklabels(list(xs.keys()), rotation=30 if len(xs) > 4 else 0)
-    ax.set_xlabel(x_name)
+    ax.set_xlabel(parameter.get("axis_label", x_name))
     ax.set_ylabel(LABELS.get(y_key, y_key))
     ax.grid(alpha=0.3)
 

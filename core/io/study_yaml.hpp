@@ -10,6 +10,11 @@
 //     - key: a dotted scene key (as --set: packer.front, particles.radius.max, particles[0].aspect_ratio)
 //       values*: [v, ...] (any YAML: numbers, names, lists, mappings)
 //       name: the CSV column and plot axis (default: the key)
+//     - name*: a parameter whose value is put into one or more keys
+//       values*: [v, ...]
+//       set*: {dotted key: template, ...} where `$name` is the value (`[1, $b, $b]`), `${expression}`
+//             a number computed from it (`${2 * r}`, core/io/study_expression.hpp), and `$$` a dollar
+//             sign; the value as a whole (`$b`) may be any YAML, in text (`mesh-$b.stl`) a scalar
 //     - name*: a parameter whose cases change several keys at once
 //       cases*: {label: {dotted key: value, ...}, ...}  (e.g. ellipse: {dimension: 2, particles.shape: ellipse})
 //     The key `scene` (a case's, or `key: scene` with file names as values) changes the base scene
@@ -31,14 +36,18 @@ namespace fp {
 /// One value of a parameter: its label (the CSV's, the plots') and the changes it makes.
 struct StudyLevel {
   std::string label;
+  std::string name_part;   ///< the value in run names: "0.5", "1_0.5_0.5" for [1, 0.5, 0.5], a case's label
   std::vector<SceneOverride> overrides;
   std::string scene_path;  ///< `scene: FILE` in a case (or `key: scene`): another base scene for its runs, resolved
 };
 
 struct StudyParameter {
   std::string name;
+  std::string name_part;     ///< the parameter in run names: its name, or the last part of its key ("aspect_ratio")
   std::vector<StudyLevel> levels;
-  bool numeric = false;  ///< every label is a number: the plots use a numeric axis
+  bool numeric = false;      ///< every value has a number on the plots' axis (`axis`)
+  std::vector<double> axis;  ///< per value: the number itself, or a list's varying entry ([1, b, b]: b)
+  std::string axis_label;    ///< the axis's name: the parameter's, with the list's form ("axes [1, x, x]")
   SourceSpot spot;
 };
 

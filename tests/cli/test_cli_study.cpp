@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 
 #include <chrono>
+#include <cstdio>
 #include <map>
 #include <thread>
 
@@ -132,7 +133,9 @@ TEST(CliStudy, ThreeByThreeByThreeSeedsAreTheCommandLinesRuns) {
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   EXPECT_NE(r.out.find("27 runs (0 kept from before, 27 run now), 0 invalid, 0 incomplete, 0 failed"), std::string::npos) << r.out;
   const auto rows = csv_rows(read_bytes(dir.work() / "s.out/results.csv"));
+  const auto full = csv_rows(read_bytes(dir.work() / "s.out/results-full.csv"));
   ASSERT_EQ(rows.size(), 27u);
+  ASSERT_EQ(full.size(), 27u);
   // The grid in order (the last parameter fastest, then the seeds), each run checked against
   // the same change given to `frontpack pack`: the same packing, byte for byte, and the CSV's
   // figures are its record's.
@@ -155,10 +158,15 @@ TEST(CliStudy, ThreeByThreeByThreeSeedsAreTheCommandLinesRuns) {
                                                    " --set particles.radius.max=" + r_max[a] + " " + changes[b]);
         ASSERT_EQ(p.exit_code, 0) << p.err;
         EXPECT_EQ(read_bytes(dir.work() / "p.csv"), read_bytes(dir.work() / "s.out/runs" / name / "packing.csv")) << name;
+        // The full table holds the record's figures exactly; the short one to 5 significant digits.
         const std::string record = read_bytes(dir.work() / "p.json");
-        EXPECT_EQ(std::stod(row.at("metrics.volume_fraction_container")), record_number(record, "volume_fraction_container")) << name;
-        EXPECT_EQ(std::stod(row.at("metrics.mean_coordination")), record_number(record, "mean_coordination")) << name;
+        const double vf = record_number(record, "volume_fraction_container");
+        EXPECT_EQ(std::stod(full[i].at("metrics.volume_fraction_container")), vf) << name;
+        EXPECT_EQ(std::stod(full[i].at("metrics.mean_coordination")), record_number(record, "mean_coordination")) << name;
         EXPECT_EQ(std::stoul(row.at("n")), static_cast<unsigned long>(record_number(record, "n"))) << name;
+        char five[32];
+        std::snprintf(five, sizeof five, "%.5g", vf);
+        EXPECT_EQ(row.at("metrics.volume_fraction_container"), five) << name;
       }
   // The standard figures and the one asked for, when matplotlib is there.
   if (!fs::exists("/usr/bin/python3") || std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") != 0) {
@@ -288,7 +296,7 @@ TEST(CliStudy, AParameterMayChangeTheBaseSceneItself) {
                                              "  - key: packer.radius_pool\n    values: [1, 2]\n");
   const RunResult r = run_frontpack(dir, "study studies/s.yaml --no-plots");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto rows = csv_rows(read_bytes(dir.work() / "studies/s.out/results.csv"));
+  const auto rows = csv_rows(read_bytes(dir.work() / "studies/s.out/results-full.csv"));
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[0].at("dimension"), "3");
   EXPECT_EQ(rows[2].at("dimension"), "2");
@@ -312,7 +320,7 @@ TEST(CliStudy, ABadStudyIsRefusedBeforeAnyRun) {
       {"scene: nothere.yaml\n", "nothere.yaml"},
       {"scene: base.yaml\nparameters:\n  - key: packer.front\n    values: [closest, fifoo]\n",
        "s.yaml:4:23: key 'packer.front': unknown value 'fifoo' (did you mean 'fifo'?)"},
-      {"scene: base.yaml\nparameters:\n  - key: packer.front\n    values: [closest, fifoo]\n", "run packer.front=fifoo,seed=1"},
+      {"scene: base.yaml\nparameters:\n  - key: packer.front\n    values: [closest, fifoo]\n", "run front=fifoo,seed=1"},
       {"scene: base.yaml\nparameters:\n  - name: c\n    cases:\n      a: {particles.radius.max: -1}\n",
        "s.yaml:5:33: key 'particles.radius.max': must be positive"},
       {"scene: base.yaml\nparameters:\n  - key: packer.front\n    values: [fifo, fifo]\n", "the value 'fifo' is given twice"},
@@ -384,7 +392,7 @@ TEST(CliStudy, AFailedRunIsReportedAndTheOthersKept) {
   // A run that fails while running (its packing cannot be written: a folder is in the way) is
   // a row with its message; the study exits 1 and the other runs are there.
   write_bytes(dir.work() / "s.yaml", "scene: base.yaml\nparameters:\n  - key: particles.radius.max\n    values: [0.02, 0.025]\n");
-  fs::create_directories(dir.work() / "s.out/runs/particles.radius.max=0.025,seed=1/packing.csv");
+  fs::create_directories(dir.work() / "s.out/runs/max=0.025,seed=1/packing.csv");
   r = run_frontpack(dir, "study s.yaml --no-plots");
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("1 of 2 runs failed"), std::string::npos) << r.err;
@@ -411,6 +419,54 @@ TEST(CliStudy, AnIncompleteRunIsMarkedSo) {
   EXPECT_EQ(rows[0].at("status"), "ok") << rows[0].at("message");
   EXPECT_EQ(rows[1].at("status"), "incomplete");
   EXPECT_NE(rows[1].at("message").find("the graded stacking placed"), std::string::npos) << rows[1].at("message");
+}
+
+// A number put into a list and into a computed value: the runs are those of `pack --set` with
+// the values written out, their names read as the values do, the plots get a numeric axis for a
+// list of numbers, and results.csv holds the main figures (results-full.csv every one).
+TEST(CliStudy, AValuePutIntoListsAndExpressionsIsTheCommandLinesRun) {
+  TempDir dir;
+  write_bytes(dir.work() / "base.yaml", kBase);
+  write_bytes(dir.work() / "s.yaml", "scene: base.yaml\n"
+                                     "parameters:\n"
+                                     "  - name: ratio\n"
+                                     "    values: [1.5, 2]\n"
+                                     "    set:\n"
+                                     "      particles.radius: {distribution: uniform, min: 0.01, max: '${0.01 * ratio}'}\n"
+                                     "  - key: container.max\n"
+                                     "    values: [[0.15, 0.15, 0.15], [0.15, 0.15, 0.2]]\n");
+  const RunResult r = run_frontpack(dir, "study s.yaml");
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  EXPECT_NE(r.out.find("s.out/results.csv (main figures; every figure in s.out/results-full.csv)"), std::string::npos) << r.out;
+  const std::string short_text = read_bytes(dir.work() / "s.out/results.csv");
+  EXPECT_EQ(lines_of(short_text).at(0),
+            "run,ratio,container.max,seed,status,n,metrics.volume_fraction_container,metrics.volume_fraction_core,"
+            "metrics.volume_fraction_reference_sphere,metrics.mean_coordination,metrics.rattler_fraction,"
+            "metrics.max_overlap_over_smaller_radius,metrics.particles_per_second,timings.pack,message");
+  const auto rows = csv_rows(short_text);
+  const auto full = csv_rows(read_bytes(dir.work() / "s.out/results-full.csv"));
+  ASSERT_EQ(rows.size(), 4u);
+  ASSERT_EQ(full.size(), 4u);
+  EXPECT_GT(full[0].size(), 3 * rows[0].size());  // every counter, timing and figure of the analysis
+  const char* names[] = {"ratio=1.5,max=0.15_0.15_0.15,seed=1", "ratio=1.5,max=0.15_0.15_0.2,seed=1",
+                         "ratio=2,max=0.15_0.15_0.15,seed=1", "ratio=2,max=0.15_0.15_0.2,seed=1"};
+  const char* r_max[] = {"0.015", "0.015", "0.02", "0.02"};
+  const char* box[] = {"[0.15, 0.15, 0.15]", "[0.15, 0.15, 0.2]", "[0.15, 0.15, 0.15]", "[0.15, 0.15, 0.2]"};
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(rows[i].at("run"), names[i]);
+    EXPECT_EQ(rows[i].at("container.max"), box[i]);
+    EXPECT_EQ(full[i].at("run"), names[i]);
+    EXPECT_NEAR(std::stod(rows[i].at("metrics.volume_fraction_container")), std::stod(full[i].at("metrics.volume_fraction_container")), 5e-5);
+    const RunResult p = run_frontpack(dir, std::string("pack base.yaml -q -o p.csv --set particles.radius.max=") + r_max[i] +
+                                               " --set 'container.max=" + box[i] + "'");
+    ASSERT_EQ(p.exit_code, 0) << p.err;
+    EXPECT_EQ(read_bytes(dir.work() / "p.csv"), read_bytes(dir.work() / "s.out/runs" / names[i] / "packing.csv")) << names[i];
+  }
+  // The plots' axis: the ratio's numbers, and the box's one varying entry.
+  const std::string request = read_bytes(dir.work() / "s.out/plots.json");
+  EXPECT_NE(request.find("\"axis_label\": \"container.max [0.15, 0.15, x]\""), std::string::npos) << request;
+  EXPECT_NE(request.find("\"axis\": [\n        0.15,\n        0.2\n      ]"), std::string::npos) << request;
+  EXPECT_NE(request.find("\"axis\": [\n        1.5,\n        2.0\n      ]"), std::string::npos) << request;
 }
 
 }  // namespace

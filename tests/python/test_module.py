@@ -301,14 +301,32 @@ def test_study_from_a_dict_is_the_command_lines_study(tmp_path, monkeypatch):
     out = frontpack.study(dict(study, output="py.out"), plots=False, progress=lambda done, total, row: seen.append((done, total)))
     assert (out["runs"], out["ran"], out["failed"], out["invalid"]) == (8, 8, 0, 0)
     assert sorted(seen) == [(k, 8) for k in range(1, 9)]
-    cli_rows = list(__import__("csv").DictReader(open(tmp_path / "s.out/results.csv")))
+    cli_rows = list(__import__("csv").DictReader(open(tmp_path / "s.out/results-full.csv")))
     assert [row["run"] for row in out["rows"]] == [row["run"] for row in cli_rows]
     for mine, theirs in zip(out["rows"], cli_rows):
         assert mine["metrics.volume_fraction_container"] == float(theirs["metrics.volume_fraction_container"])
         assert mine["n"] == int(theirs["n"]) and mine["status"] == "ok" and mine["r_max"] in (0.02, 0.03)
         assert (tmp_path / "py.out/runs" / mine["run"] / "packing.csv").read_bytes() == \
             (tmp_path / "s.out/runs" / mine["run"] / "packing.csv").read_bytes()
+    # results.csv: the main figures; results-full.csv (and the rows): every figure of the record.
+    full_rows = list(__import__("csv").DictReader(open(out["full_csv"])))
+    assert out["csv"] == "py.out/results.csv" and out["full_csv"] == "py.out/results-full.csv"
+    assert [row["run"] for row in full_rows] == [row["run"] for row in out["rows"]]
+    assert set(out["rows"][0]) == set(full_rows[0]) and "counters.contacts" in full_rows[0]
+    short_rows = list(__import__("csv").DictReader(open(tmp_path / "s.out/results.csv")))
+    assert set(short_rows[0]) < set(full_rows[0]) and "counters.contacts" not in short_rows[0]
+    assert [abs(float(a["metrics.volume_fraction_container"]) / float(b["metrics.volume_fraction_container"]) - 1) < 1e-4
+            for a, b in zip(short_rows, cli_rows)] == [True] * 8
     again = frontpack.study(dict(study, output="py.out"), plots=False)
     assert (again["kept"], again["ran"]) == (8, 0)
+    # One number put into a key through an expression: the runs are those of the values written out.
+    bound = frontpack.study({"scene": "base.yaml", "output": "bound.out",
+                             "parameters": [{"name": "ratio", "values": [1.5, 2],
+                                             "set": {"particles.radius.max": "${0.02 * ratio}"}}]}, plots=False)
+    assert [row["run"] for row in bound["rows"]] == ["ratio=1.5,seed=1", "ratio=2,seed=1"]
+    for row, r_max in zip(bound["rows"], ("0.03", "0.04")):
+        r = cli("pack", "base.yaml", "-q", "-o", "bound.csv", "--set", "particles.radius.max=" + r_max, cwd=tmp_path)
+        assert r.returncode == 0, r.stderr
+        assert (tmp_path / "bound.csv").read_bytes() == (tmp_path / "bound.out/runs" / row["run"] / "packing.csv").read_bytes()
     with pytest.raises(frontpack.SceneError, match=r"<dict>:\d+:\d+: key 'seed': unknown key \(did you mean 'seeds'\?\)"):
         frontpack.study({"scene": "base.yaml", "seed": 2})
