@@ -17,35 +17,27 @@ trap 'rm -rf "$dir"' EXIT
 cd "$dir"
 . "$here/block_scenes.sh"
 
+. "$here/readme_snippet.sh"
+readme_snippet lammps-spheres > spheres.in
+readme_snippet lammps-clumps > clumps.in
+
+# lammps_input SNIPPET DATA DIM STEPS: the README's input for DATA with the changes it states for
+# 2D, and a displacement compute before its run.
+lammps_input() {
+  awk -v data="$2" -v dim="$3" -v steps="$4" '
+    /^read_data/ {print "read_data " data; next}
+    /^boundary/ && dim == 2 {print "dimension 2"; print "boundary f f p"; next}
+    /^fix +1 +all +nve\/sphere/ && dim == 2 {print "fix 1 all nve/sphere disc"; print "fix 2 all enforce2d"; next}
+    /^fix +1 +all +rigid/ && dim == 2 {print; print "fix 2 all enforce2d"; next}
+    /^run/ {print "compute d all displace/atom"; print "compute dmax all reduce max c_d[4]"
+            print "thermo_style custom step atoms c_dmax"; print "thermo_modify format float %.6g lost error"
+            print "thermo " steps; print "run " steps; next}
+    {print}' "$1"
+}
+
 # run_lammps DATA DIM: prints "ATOMS_READ ATOMS_AFTER MAX_DISPLACEMENT"
 run_lammps() {
-  if [ "$2" = 2 ]; then
-    head='dimension 2
-boundary f f p'
-    fixes='fix 1 all nve/sphere disc
-fix 2 all enforce2d'
-  else
-    head='boundary f f f'
-    fixes='fix 1 all nve/sphere'
-  fi
-  # The README's snippet for spheres (keep in step).
-  cat > in.lmp <<L
-units si
-$head
-atom_style sphere
-read_data $1
-pair_style gran/hooke 2000.0 NULL 50.0 NULL 0.5 0
-pair_coeff * *
-comm_modify vel yes
-neighbor 0.001 bin
-$fixes
-compute d all displace/atom
-compute dmax all reduce max c_d[4]
-thermo_style custom step atoms c_dmax
-thermo_modify format float %.6g lost error
-timestep 1e-6
-run 100
-L
+  lammps_input spheres.in "$1" "$2" 100 > in.lmp
   lmp -in in.lmp -log none -echo none > lmp.out 2>&1 || { echo "FAIL: lmp could not run $1"; cat lmp.out; exit 1; }
   read=$(sed -n 's/^ *\([0-9]*\) atoms$/\1/p' lmp.out | head -1)
   last=$(awk '$1 == "100" && NF == 3 {print $2, $3}' lmp.out | tail -1)
@@ -106,18 +98,11 @@ printf 'material: {density: 7850}\n' | cat s3-front.yaml - > steel.yaml
 mass_check steel.data 3 7850
 
 # Clumps (clusters of spheres): the data file gives each member its clump as molecule id, and
-# the README's input runs them with fix rigid/small molecule as written: LAMMPS finds one rigid
+# the README's input (snippet lammps-clumps) runs them with fix rigid/small molecule as written: LAMMPS finds one rigid
 # body per clump with every member, and 1,000 steps without gravity move nothing (no overlap).
 clumps_check() {  # clumps_check DIM
-  if [ "$1" = 3 ]; then
-    box='{type: box, min: [0, 0, 0], max: [6, 6, 6]}'; centers='[[-0.5, 0, 0], [0.5, 0, 0], [0.5, 0.8, 0]]'
-    head='boundary f f f'; fixes='fix 1 all rigid/small molecule'
-  else
-    box='{type: rectangle, min: [0, 0], max: [20, 20]}'; centers='[[-0.5, 0], [0.5, 0], [0.5, 0.8]]'
-    head='dimension 2
-boundary f f p'; fixes='fix 1 all rigid/small molecule
-fix 2 all enforce2d'
-  fi
+  if [ "$1" = 3 ]; then box='{type: box, min: [0, 0, 0], max: [6, 6, 6]}'; centers='[[-0.5, 0, 0], [0.5, 0, 0], [0.5, 0.8, 0]]'
+  else box='{type: rectangle, min: [0, 0], max: [20, 20]}'; centers='[[-0.5, 0], [0.5, 0], [0.5, 0.8]]'; fi
   cat > clumps$1.yaml <<Y
 dimension: $1
 seed: 3
@@ -134,23 +119,7 @@ Y
   atoms=$(awk '/^Atoms/ {on = 1; next} on && NF >= 8 {c++} END {print c + 0}' clumps$1.data)
   clumps=$(awk '/^Atoms/ {on = 1; next} on && NF >= 8 && $8 > m {m = $8} END {print m + 0}' clumps$1.data)
   [ "$clumps" = 150 ] || { echo "FAIL: ${1}D clumps: $clumps clumps in the file, the scene asks 150"; exit 1; }
-  cat > clumps.lmp <<L
-$head
-atom_style hybrid sphere bond
-read_data clumps$1.data
-pair_style gran/hooke 2000.0 NULL 50.0 NULL 0.5 0
-pair_coeff * *
-comm_modify vel yes
-neigh_modify exclude molecule/intra all
-$fixes
-compute d all displace/atom
-compute dmax all reduce max c_d[4]
-thermo_style custom step atoms c_dmax
-thermo_modify format float %.6g lost error
-thermo 1000
-timestep 1e-5
-run 1000
-L
+  lammps_input clumps.in clumps$1.data "$1" 1000 > clumps.lmp
   lmp -in clumps.lmp -log none -echo none > clumps.out 2>&1 || { echo "FAIL: lmp could not run clumps$1.data"; cat clumps.out; exit 1; }
   bodies=$(sed -n 's/^ *\([0-9]*\) rigid bodies with \([0-9]*\) atoms$/\1 \2/p' clumps.out | head -1)
   [ "$bodies" = "150 $atoms" ] || { echo "FAIL: ${1}D clumps: LAMMPS made '$bodies' (rigid bodies, atoms) of 150 clumps, $atoms atoms"; cat clumps.out; exit 1; }

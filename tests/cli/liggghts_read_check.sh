@@ -16,14 +16,8 @@ trap 'rm -rf "$dir"' EXIT
 cd "$dir"
 . "$here/block_scenes.sh"
 
-# The README's block after "<!-- snippet: NAME -->", comments and trailing blanks stripped.
-readme_snippet() {
-  awk -v mark="<!-- snippet: $1 -->" '$0 == mark {found = 1; next}
-    found == 1 && /^```/ {found = 2; next} found == 2 && /^```/ {exit} found == 2 {print}' "$here/../../README.md" |
-    sed 's/ *#.*$//; s/[[:space:]]*$//'
-}
+. "$here/readme_snippet.sh"
 readme_snippet liggghts-spheres > snippet.in
-grep -q '^run' snippet.in || { echo "FAIL: the README's LIGGGHTS block (snippet: liggghts-spheres) is missing"; exit 1; }
 
 # liggghts_input DATA DIM STYLE STEPS: the README's input for DATA with the changes it states for
 # 2D and for clumps, and a displacement compute before its run.

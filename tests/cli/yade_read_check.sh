@@ -14,28 +14,26 @@ trap 'rm -rf "$dir"' EXIT
 cd "$dir"
 . "$here/block_scenes.sh"
 
-# The README's YADE script (keep in step), with the test's counting around it.
-cat > check.py <<'P'
-import sys
-from yade import ymport
-path, kind = sys.argv[1], sys.argv[2]
-O.materials.append(FrictMat(young=1e7, poisson=0.3, frictionAngle=0.5, density=2650))
-if kind == "spheres":
-    O.bodies.append(ymport.text(path))
-else:
-    ymport.textClumps(path)
-O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
-             InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
-                             [Law2_ScGeom_FrictPhys_CundallStrack()]),
-             NewtonIntegrator(gravity=(0, 0, 0), damping=0)]
-O.dt = 0.5 * PWaveTimeStep()
-start = [b.state.pos for b in O.bodies]
-O.run(200, True)
+# The README's YADE script (snippet yade) as written, for the file and kind given on the command
+# line (clumps: the third line becomes ymport.textClumps, as the README says), with the test's
+# counting around its run.
+. "$here/readme_snippet.sh"
+readme_snippet yade > snippet.py
+{
+  echo 'import sys'
+  echo 'path, kind = sys.argv[1], sys.argv[2]'
+  awk '/^O\.bodies\.append\(ymport\.text\(/ {print "if kind == \"spheres\":"; print "    O.bodies.append(ymport.text(path))"
+                                                print "else:"; print "    ymport.textClumps(path)"; next}
+       /^O\.run\(/ {print "start = [b.state.pos for b in O.bodies]"; print; next}
+       {print}' snippet.py
+  cat <<'P'
 moved = max((b.state.pos - p).norm() for b, p in zip(O.bodies, start))
 spheres = sum(1 for b in O.bodies if isinstance(b.shape, Sphere))
 clumps = sum(1 for b in O.bodies if b.isClump)
 print("RESULT %d %d %.6g" % (spheres, clumps, moved))
 P
+} > check.py
+grep -q 'ymport.text(path)' check.py || { echo "FAIL: the README's YADE block has no ymport.text line"; exit 1; }
 
 # run_yade FILE KIND: prints "SPHERES CLUMPS MAX_DISPLACEMENT"
 run_yade() {
