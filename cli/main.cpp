@@ -105,7 +105,7 @@ int run(int argc, char** argv) {
 
   fp::PackCommandOptions pack;
   CLI::App* pack_cmd = app.add_subcommand("pack", "pack the container of SCENE and write the outputs");
-  pack_cmd->add_option("scene", pack.scene_path, "scene file (YAML)")->required();
+  pack_cmd->add_option("scene", pack.scene_path, "scene file (YAML; its relative paths start at its own folder, those of the options at the working directory)")->required();
   // Read as text and converted here: CLI11 would wrap "-1" round to 2^64-1, clamp a number past
   // 2^64-1 and read "042" as octal 34, where the scene's `seed: 042` is 42. Decimal digits only.
   std::string seed_text;
@@ -199,11 +199,11 @@ int run(int argc, char** argv) {
   fp::StudyOptions study;
   bool no_plots = false;
   CLI::App* study_cmd = app.add_subcommand(
-      "study", "pack every run of a study (a base scene, parameters swept, seeds) in parallel processes: one CSV, the figures");
+      "study", "pack every run of a study (a base scene, parameters swept, seeds) in parallel processes: results.csv (main figures), results-full.csv (every figure), the plots");
   study_cmd->add_option("study", study_path, "study file (YAML; README: Comparative studies)")->required();
   study_cmd->add_option("-J,--jobs", study.jobs, "runs at once (replaces the study's jobs; default: hardware threads / threads)")
       ->check(CLI::Range(1, fp::kMaxStudyJobs));
-  study_cmd->add_flag("--no-plots", no_plots, "the CSV only");
+  study_cmd->add_flag("--no-plots", no_plots, "the tables only (no figures)");
   study_cmd->add_flag("--list", study.list_only, "check every run's scene, list the runs (kept or to run) and run nothing");
   study_cmd->add_option("--python", study.python, "interpreter with matplotlib (default /usr/bin/python3)");
   study_cmd->add_flag("-q,--quiet", study.quiet, "no line per run");
