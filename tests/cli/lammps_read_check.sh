@@ -101,20 +101,6 @@ mass_check steel.data 3 7850
 # the README's input (snippet lammps-clumps) runs them with fix rigid/small molecule as written: LAMMPS finds one rigid
 # body per clump with every member, and 1,000 steps without gravity move nothing (no overlap).
 clumps_check() {  # clumps_check DIM
-  if [ "$1" = 3 ]; then box='{type: box, min: [0, 0, 0], max: [6, 6, 6]}'; centers='[[-0.5, 0, 0], [0.5, 0, 0], [0.5, 0.8, 0]]'
-  else box='{type: rectangle, min: [0, 0], max: [20, 20]}'; centers='[[-0.5, 0], [0.5, 0], [0.5, 0.8]]'; fi
-  cat > clumps$1.yaml <<Y
-dimension: $1
-seed: 3
-container: $box
-particles:
-  - shape: cluster
-    centers: $centers
-    radii: [0.5, 0.5, 0.4]
-    size: {distribution: uniform, min: 0.5, max: 1}
-stop: {particles: 150}
-Y
-  # The count stop leaves the box unfilled: exit 4 (incomplete), the file written.
   "$fp" pack clumps$1.yaml -q -o clumps$1.data || [ $? -eq 4 ]
   atoms=$(awk '/^Atoms/ {on = 1; next} on && NF >= 8 {c++} END {print c + 0}' clumps$1.data)
   clumps=$(awk '/^Atoms/ {on = 1; next} on && NF >= 8 && $8 > m {m = $8} END {print m + 0}' clumps$1.data)

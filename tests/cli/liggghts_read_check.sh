@@ -61,19 +61,6 @@ check s2.data 2 0.004 "2D disks"
 
 # Clumps: the clusters' data file as written, one rigid body per clump with every member.
 clumps_check() {  # clumps_check DIM
-  if [ "$1" = 3 ]; then box='{type: box, min: [0, 0, 0], max: [6, 6, 6]}'; centers='[[-0.5, 0, 0], [0.5, 0, 0], [0.5, 0.8, 0]]'
-  else box='{type: rectangle, min: [0, 0], max: [20, 20]}'; centers='[[-0.5, 0], [0.5, 0], [0.5, 0.8]]'; fi
-  cat > clumps$1.yaml <<Y
-dimension: $1
-seed: 3
-container: $box
-particles:
-  - shape: cluster
-    centers: $centers
-    radii: [0.5, 0.5, 0.4]
-    size: {distribution: uniform, min: 0.5, max: 1}
-stop: {particles: 150}
-Y
   "$fp" pack clumps$1.yaml -q -o clumps$1.data || [ $? -eq 4 ]  # 4: the count stop leaves the box unfilled
   atoms=$(awk '/^Atoms/ {on = 1; next} on && NF >= 8 {c++} END {print c + 0}' clumps$1.data)
   set -- "$1" $(run_liggghts clumps$1.data "$1" clumps 1000)

@@ -53,19 +53,8 @@ grep -v '^packer:' s3.yaml > s3-front.yaml
 n=$(grep -vc '^#' spheres.txt)
 check spheres.txt spheres 0.01 "$n" 0
 
-cat > clumps.yaml <<Y
-dimension: 3
-seed: 3
-container: {type: box, min: [0, 0, 0], max: [6, 6, 6]}
-particles:
-  - shape: cluster
-    centers: [[-0.5, 0, 0], [0.5, 0, 0], [0.5, 0.8, 0]]
-    radii: [0.5, 0.5, 0.4]
-    size: {distribution: uniform, min: 0.5, max: 1}
-stop: {particles: 150}
-Y
 # The count stop leaves the box unfilled: exit 4 (incomplete), the file written.
-"$fp" pack clumps.yaml -q -o clumps.txt || [ $? -eq 4 ]
+"$fp" pack clumps3.yaml -q -o clumps.txt || [ $? -eq 4 ]
 check clumps.txt clumps 0.2 "$(grep -vc '^#' clumps.txt)" 150
 
 # The control: one sphere grown by 10 % overlaps its neighbours, and YADE pushes them apart.
