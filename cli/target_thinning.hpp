@@ -1,5 +1,5 @@
 #pragma once
-// The scene's `target:` for every packer (issue 13): a packing above the target solid fraction
+// The scene's `target:` for every packer: a packing above the target solid fraction
 // thinned down to it (densify/thinning.hpp), spheres and shapes alike; what the summary and the
 // run record say of it, or that the target was not reached (with the value reached).
 #include <optional>

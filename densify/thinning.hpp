@@ -1,5 +1,5 @@
 #pragma once
-// Thinning: a packing brought down to a target solid fraction, the same everywhere (issue 13,
+// Thinning: a packing brought down to a target solid fraction, the same everywhere (the scene's
 // `target:`). A packer that stops growing at phi0 leaves a dense part and an empty one (the
 // valera-cube at 0.45: slabs from 0.29 at the walls to 0.56 in the middle); packing to the
 // packer's own density and then removing particles spread over the whole container gives every

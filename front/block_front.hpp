@@ -1,5 +1,5 @@
 #pragma once
-// The advancing front on several threads (issue 11). The container's bounding box is cut into
+// The advancing front on several threads. The container's bounding box is cut into
 // blocks (front/block_layout.hpp); each block grows with its own front, neighbour grid and random
 // stream. A block picks s0 only inside its box, but towards its neighbours that grow later it
 // places particles wherever they touch s0, up to 2 r_max beyond its faces; those stay unpicked:

@@ -1,6 +1,6 @@
 #pragma once
 // The local frame of a container: the origin its coordinates are stored relative to, so that a
-// scene far from the origin keeps its digits (issue 9: site or CAD coordinates, offsets of 1e6
+// scene far from the origin keeps its digits (site or CAD coordinates, offsets of 1e6
 // or 1e9). A double carries 53 bits; at 1e9 its spacing is 1.2e-7, a millionth of a particle
 // of radius 0.01 and far above the contact tolerance of 1e-9 r. Everything the packer, the
 // contact solvers and the metrics compute is in the local frame; only the scene reader (inputs)

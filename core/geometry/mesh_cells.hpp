@@ -1,7 +1,7 @@
 #pragma once
 // Private to the mesh container: a uniform grid over a closed triangle surface, built once for the
 // scale of a scene's queries (the largest particle), so that most queries of a packing need no
-// tree search (issue 11: 57 % of a femur packing went to the AABB tree and ray shooting).
+// tree search (57 % of a femur packing went to the AABB tree and ray shooting).
 //  * Each cell lists the facets within `margin` of it (so a point's facets within margin are all
 //    in its cell's list), keeps a lower bound of its distance to the surface, and the side of a
 //    sample point in it.

@@ -136,7 +136,7 @@ class AnyCloser {
 struct TriangleSurfaceIndex::Impl {
   // CGAL sees the surface scaled by a power of two to an extent of about 1 (exact): its ray
   // shooting hung on a mesh scaled by 2^60, and a scene scaled by any power of two must behave
-  // exactly as at scale 1 (issue 9).
+  // exactly as at scale 1.
   double scale = 1.0, inv = 1.0;
   Point in(const Vec3& p) const { return to_point(Vec3(p * inv)); }
   Mesh mesh;  ///< face i is facet i (geometry only: the caller may re-orient its facets afterwards)

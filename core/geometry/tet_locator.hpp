@@ -2,7 +2,7 @@
 // Which tetrahedron of a mesh holds a point: a uniform grid over the mesh's bounds (cells of
 // about the mean edge), each cell listing the tetrahedra whose bounding boxes meet it; a point is
 // tested against its cell's list by barycentric coordinates. Used to give a point the physical
-// region of the tetrahedron it lies in (issue 12: regions of their own radii and solid fraction).
+// region of the tetrahedron it lies in (regions of their own radii and solid fraction).
 #include <array>
 #include <cstdint>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// A tetrahedral mesh as frontpack uses it (issue 12, paper 000's packing of a finite-element
+// A tetrahedral mesh as frontpack uses it (paper 000's packing of a finite-element
 // mesh): nodes, linear tetrahedra and the triangles the file lists (boundary or interface
 // faces), each with the physical group it belongs to, and the groups' names.
 #include <array>

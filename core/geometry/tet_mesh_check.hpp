@@ -1,5 +1,5 @@
 #pragma once
-// What a tetrahedral mesh must be before anything is packed into it (issue 12): at least one
+// What a tetrahedral mesh must be before anything is packed into it: at least one
 // tetrahedron; every tetrahedron positively oriented (Gmsh's convention: node 3 on the side of
 // the face 0-1-2 its right-hand normal points to) and not flat, its volume above 1e-12 of its
 // longest edge cubed; conforming: a triangular face shared by at most two tetrahedra, and the

@@ -1,5 +1,5 @@
 #pragma once
-// A tetrahedral mesh as a container (issue 12): read from a Gmsh .msh file (msh_reader.hpp),
+// A tetrahedral mesh as a container: read from a Gmsh .msh file (msh_reader.hpp),
 // checked (tet_mesh_check.hpp), and bounded by its boundary faces (those of one tetrahedron,
 // turned outwards), which make the MeshContainer every packer, check and figure uses; the mesh
 // itself is kept, in the container's local frame, for the packers that follow it (fill/).

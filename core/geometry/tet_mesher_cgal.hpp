@@ -1,5 +1,5 @@
 #pragma once
-// Meshing the inside of a closed triangulated surface into tetrahedra (issue 12, item 1): CGAL's
+// Meshing the inside of a closed triangulated surface into tetrahedra: CGAL's
 // Mesh_3 on the surface as a polyhedral domain, refined to a target edge length, without the
 // optional perturbation and exudation steps and without keeping sharp edges (the packer needs
 // tetrahedra of the right size, not the surface's creases: the container stays the surface). For the tetrahedral-mesh packer of paper 000 when the container is an STL, OFF

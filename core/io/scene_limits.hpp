@@ -1,5 +1,5 @@
 #pragma once
-// What a scene asks of the machine, estimated and checked before any work (issue 9: "limits
+// What a scene asks of the machine, estimated and checked before any work ("limits
 // checked up front"): how many particles the run may place, and the memory that takes. A scene
 // that would not fit is refused with exit 2, naming the key to change, instead of running until
 // the kernel kills it or a 32-bit particle id wraps.

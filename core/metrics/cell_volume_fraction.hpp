@@ -1,6 +1,6 @@
 #pragma once
 // Uniformity of a packing: the solid fraction in cubic (square) cells of a few mean diameters,
-// away from the walls (issue 13: a target solid fraction is only a target if every part of the
+// away from the walls (a target solid fraction is only a target if every part of the
 // container has it; a stop criterion alone leaves a dense core and an empty rim).
 //
 // Cells tile space from the container's low corner with edge `edge`; a cell is counted when it

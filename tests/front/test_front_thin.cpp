@@ -1,4 +1,4 @@
-// Issue 9: containers barely wider than a particle. A monolayer cell (a slab 2.05 r_max thick),
+// Containers barely wider than a particle. A monolayer cell (a slab 2.05 r_max thick),
 // needles (cylinders 1.5 r_max in radius, along an axis and along a diagonal), a 2D strip, and a
 // box far too large to be filled that is packed around its seed point. Each packing is checked by
 // the independent brute-force code (front_test_util.hpp) and must actually fill the container:

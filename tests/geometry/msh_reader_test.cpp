@@ -1,4 +1,4 @@
-// The MSH reader (issue 12): the four files Gmsh 4.8.4 wrote from tests/data/meshes/msh/
+// The MSH reader: the four files Gmsh 4.8.4 wrote from tests/data/meshes/msh/
 // two_boxes.geo (versions 2.2 and 4.1, ASCII and binary) read as the same mesh, whose
 // tetrahedra fill the unit cube exactly, each box its physical volume, the bottom face its
 // physical surface; every deviation is refused with its line (ASCII) or byte (binary).

@@ -1,4 +1,4 @@
-// The checks a tetrahedral mesh passes before a packing (issue 12): Gmsh's meshes pass; an
+// The checks a tetrahedral mesh passes before a packing: Gmsh's meshes pass; an
 // inverted or flat tetrahedron, overlapping elements, a hanging node, an empty named volume and a
 // mesh without tetrahedra are each refused, naming the element or nodes.
 #include "core/geometry/tet_mesh_check.hpp"

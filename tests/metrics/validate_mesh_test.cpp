@@ -1,6 +1,6 @@
 // The validator against a real mesh container (the femur): a planted overlap of 1e-8 of the
 // (equal) radii and a ball 1e-8 r outside the surface are found and named; the clean packing
-// passes (issue 3; the overlap allowance eps x the smaller radius, here eps = 1e-9).
+// passes (the overlap allowance eps x the smaller radius, here eps = 1e-9).
 #include <gtest/gtest.h>
 
 #include <cmath>
