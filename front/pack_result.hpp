@@ -32,6 +32,7 @@ struct FrontCounters {
   std::uint64_t radii_dropped = 0;        ///< waiting drafts dropped onto the front (one contact)
   std::uint64_t radii_placed_ahead = 0;   ///< a rare large class: placed ahead of the front
   std::uint64_t radii_drawn_ahead = 0;    ///< of those, drawn before their turn (the law's next large draft skipped)
+  std::uint64_t radii_on_skeleton = 0;    ///< fines put on a skeleton of the large class packed first
   std::uint64_t max_neighbours = 0;       ///< largest |V| seen (bounded by r_max/r_min, paper 002 Sect. 6)
   std::uint64_t voids_reopened = 0;       ///< voids found after F ran empty, growth resumed from their surroundings
   std::uint64_t voids_seeded = 0;         ///< voids found after F ran empty and given a new seed particle
@@ -71,6 +72,7 @@ struct FrontCounters {
       {"radii_dropped", &FrontCounters::radii_dropped},
       {"radii_placed_ahead", &FrontCounters::radii_placed_ahead},
       {"radii_drawn_ahead", &FrontCounters::radii_drawn_ahead},
+      {"radii_on_skeleton", &FrontCounters::radii_on_skeleton},
       {"max_neighbours", &FrontCounters::max_neighbours},
       {"voids_reopened", &FrontCounters::voids_reopened},
       {"voids_seeded", &FrontCounters::voids_seeded},

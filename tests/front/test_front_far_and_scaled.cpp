@@ -1,4 +1,4 @@
-// Issue 9: a scene shifted far from the origin or scaled by a power of two packs the same packing
+// A scene shifted far from the origin or scaled by a power of two packs the same packing
 // as at the origin and scale 1. Every container kind, offsets 1e3, 2^20, 1e6 and 1e9, scales
 // 2^-60 .. 2^60. The shifted scenes use sizes that are exact at every offset (dyadic: 0.5, 0.625),
 // so the packing in the container's local frame must be bit for bit the reference's (and the
@@ -94,6 +94,15 @@ TEST(FarAndScaled, Box3D) { expect_same_as_reference<3>(cube("box", 0.01, 0.02))
 TEST(FarAndScaled, RareLargeClass3D) {
   expect_same_as_reference<3>(cube("box, rare large class", 0.015625, 0.0625, [](double s) {
     return "{distribution: discrete, values: [[" + num(0.015625 * s) + ", 100], [" + num(0.0625 * s) + ", 1]]}";
+  }));
+}
+
+// Gravel holding nearly all of the volume (radii 64 times apart at 100 : 1) is packed first as a
+// skeleton and the sand put on it at random points of its grains: the same packing far away and
+// at every scale too.
+TEST(FarAndScaled, SkeletonAndFines3D) {
+  expect_same_as_reference<3>(cube("box, skeleton and fines", 0.0009765625, 0.0625, [](double s) {
+    return "{distribution: discrete, values: [[" + num(0.0009765625 * s) + ", 100], [" + num(0.0625 * s) + ", 1]]}";
   }));
 }
 
