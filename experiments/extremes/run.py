@@ -1,4 +1,4 @@
-"""Numerical stability at the extremes (issue 9): every case of the issue packed by one binary,
+"""Numerical stability at the extremes: every case packed by one binary,
 each with a timeout, its own validation verdict and `frontpack validate` of the written file,
 and compared with its reference case (the same scene at the origin, scale 1).
 
@@ -224,7 +224,7 @@ def cases(folder):
                 scene(2, f"{{type: polygon, vertices: {yaml_list(many_gon(100000))}}}", uniform(0.01, 0.02))))
     out.append(("degenerate", "polygon with 10^4 vertices", None,
                 scene(2, f"{{type: polygon, vertices: {yaml_list(many_gon(10000))}}}", uniform(0.01, 0.02))))
-    # Limits (checked before any work since issue 9): a run that could never end well is refused.
+    # Limits (checked before any work): a run that could never end well is refused.
     big = lambda side: f"{{type: box, min: [0, 0, 0], max: [{side!r}, {side!r}, {side!r}]}}"
     out.append(("limits", "box 1e300 wide", None, scene(3, big(1e300), uniform(0.01, 0.02))))
     out.append(("limits", "box from -1e308 to 1e308", None,
@@ -292,7 +292,7 @@ def write_results(argv, binary):
     labels = sorted(runs, key=lambda s: (s != "before", s))
     with tempfile.TemporaryDirectory() as d:
         order = [(g, n, ref) for g, n, ref, _ in cases(Path(d))]
-    lines = ["# Numerical stability at the extremes (issue 9)", ""]
+    lines = ["# Numerical stability at the extremes", ""]
     lines += runkit.provenance_lines(binary, argv)
     lines += ["",
               "Every case packed with `frontpack pack SCENE -q -o out.csv --record r.json` under a timeout, then",
@@ -302,7 +302,7 @@ def write_results(argv, binary):
               "Scene texts: `cases()` in run.py; the ctest suites tests/front/test_front_far_and_scaled.cpp,",
               "test_front_thin.cpp and test_front_extremes.cpp assert them (the bad-input cases are in",
               "tests/cli/test_cli_hostile.cpp, the limits in tests/cli/test_cli_limits.cpp).", "",
-              "* `before`: the binary of main at 00bb899, the commit before issue 9 (timeout 60 s, 120 s for the 99:1 mixes);",
+              "* `before`: the binary of main at 00bb899, the commit before the extremes work (timeout 60 s, 120 s for the 99:1 mixes);",
               "* `after`: the current binary (timeout 120 s). Times are of one core of a shared 2-core machine",
               "  (other builds ran meanwhile: +-30 %).", ""]
     for label in labels:

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Mesh containers against a box, an old build against a new one, interleaved (issue 11 item 1).
+"""Mesh containers against a box, an old build against a new one, interleaved.
 
 Usage: run.py OLD_FRONTPACK NEW_FRONTPACK OUTDIR [repeats]
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Polygon containers with many vertices (issue 9): pack time and wall time of `frontpack pack`
+"""Polygon containers with many vertices: pack time and wall time of `frontpack pack`
 and `frontpack analyze` for n = 10^3 .. 10^6 vertices, before and after the edge tree
 (core/geometry/edge_chain_tree.hpp). Writes RESULTS.md next to this file, entirely.
 

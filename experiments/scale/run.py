@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The plan for 10^9 spheres (issue 11 item 5): what a rank does, measured on this machine with
+"""The plan for 10^9 spheres: what a rank does, measured on this machine with
 K = 1, 2, 4, 8 ranks (oversubscribed beyond 2: the CPU time per rank is what counts there, not the
 wall time), and the order of growth of front/block_front.hpp simulated for many ranks.
 

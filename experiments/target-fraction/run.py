@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A target solid fraction for the whole container (issue 13, item 3): `target: {solid_fraction: phi}`
+"""A target solid fraction for the whole container: `target: {solid_fraction: phi}`
 (the packer's own density, then thinned evenly: densify/thinning.hpp) against
 `stop: {volume_fraction: phi}` (growth stopped at phi), same scenes and seeds.
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The front on threads (issue 11 item 3): the single front against blocks on 2 threads, and the
+"""The front on threads: the single front against blocks on 2 threads, and the
 quality at block faces.
 
 Usage: run.py FRONTPACK OUTDIR [repeats]

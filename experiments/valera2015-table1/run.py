@@ -362,7 +362,7 @@ def main():
             "vf_container_absdiff": abs(vf_cont_np - m["volume_fraction_container"]),
             "particle0_offset_from_centre": centre_dev,
         }
-        an = rec["analysis"]  # frontpack's own analysis (core/metrics/packing_analysis), issue 3
+        an = rec["analysis"]  # frontpack's own analysis (core/metrics/packing_analysis)
         for form in ("per_particle", "per_contact"):
             for k, v in enumerate(sorted(an["fabric"][form]["eigenvalues"], reverse=True)):
                 row[f"fabric_{form}_{k + 1}"] = v
@@ -460,7 +460,7 @@ def main():
         plot_ok = False
         plot_note = getattr(e, "stderr", "") or str(e)
 
-    # The figures of `frontpack analyze --plots` for the default cube 0.9, seed 1 (issue 3).
+    # The figures of `frontpack analyze --plots` for the default cube 0.9, seed 1.
     figs = os.path.join(HERE, "figures")
     os.makedirs(figs, exist_ok=True)
     cube1 = os.path.join(tmp, "cube-analyze-1.csv")

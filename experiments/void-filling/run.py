@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Void filling after the front (issue 12, item 3): the front alone against the front followed by
+"""Void filling after the front: the front alone against the front followed by
 `densify:` (paper 000 step 7b), same scenes and seeds, at R = r_max / r_min = 2, 7 and 50, and a
 Fuller gradation by mass at R = 7.
 

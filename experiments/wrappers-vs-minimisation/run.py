@@ -147,7 +147,7 @@ def fmt(rows, k, digits):
 
 def report(argv):
     rows = load()
-    lines = ["# Wrapper intersection against potential minimisation (issue 10)", ""]
+    lines = ["# Wrapper intersection against potential minimisation", ""]
     lines += provenance_lines(FRONTPACK, argv)
     lines += ["", "Every scene packed with `frontpack pack SCENE --seed S -q -o out.csv --record rec.json` (one core; the other",
               "core of this 2-core machine was busy with builds meanwhile: rates ±30 %), once with",
