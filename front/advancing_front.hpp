@@ -386,7 +386,7 @@ class AdvancingFront {
         bool placed = false;
         for (int t = 0; t < kFineTries && !placed; ++t) {
           const auto g = static_cast<int>(rng_.below(skeleton));
-          const Vec<D> x = model_.touching(g, d, random_direction());
+          const Vec<D> x = model_.touching(g, d, front_parts::random_unit<D>(rng_));
           if ((placed = fits(d, x))) add_particle(d, x);
         }
         if (placed) {
@@ -397,16 +397,6 @@ class AdvancingFront {
           res.never_fit_radii.push_back(radius(d));
         }
       }
-    }
-  }
-
-  /// A direction uniform on the unit sphere (circle): a point of the unit ball, normalised.
-  Vec<D> random_direction() {
-    for (;;) {
-      Vec<D> u;
-      for (int a = 0; a < D; ++a) u[a] = rng_.uniform(-1.0, 1.0);
-      const double n = u.norm();
-      if (n > 1e-3 && n <= 1) return u / n;
     }
   }
 

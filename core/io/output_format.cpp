@@ -56,12 +56,4 @@ SurfaceDetail parse_surface_detail(const std::string& name) {
   throw std::invalid_argument("unknown surface detail '" + name + "' (known: fine, coarse, none)");
 }
 
-const char* surface_detail_name(SurfaceDetail detail) {
-  switch (detail) {
-    case SurfaceDetail::Coarse: return "coarse";
-    case SurfaceDetail::None: return "none";
-    default: return "fine";
-  }
-}
-
 }  // namespace fp

@@ -29,6 +29,5 @@ enum class SurfaceDetail { Fine, Coarse, None };
 
 /// "fine" | "coarse" | "none"; throws std::invalid_argument listing them.
 SurfaceDetail parse_surface_detail(const std::string& name);
-const char* surface_detail_name(SurfaceDetail detail);
 
 }  // namespace fp

@@ -168,19 +168,12 @@ ContainerPtr<2> parse_polygon(const Map& m, const std::optional<Vec2>& origin) {
   return construct(m, [&] { return std::make_shared<const PolygonContainer>(vertices, origin.value_or(frame_origin<2>(box))); });
 }
 
-/// A path written in the scene file: relative to the scene file's folder, as every path in a
-/// file is, so a scene writes and reads the same files from whatever folder it is run.
-std::string scene_relative(const Context& ctx, const std::string& name) {
-  const std::filesystem::path p(name);
-  return (p.is_absolute() ? p : (ctx.folder / p)).lexically_normal().string();
-}
-
 ContainerPtr<3> parse_mesh(const Map& m, const Context& ctx, const std::optional<Vec3>& origin) {
   const Value file = m.get("file", "an STL, OFF or OBJ surface or a Gmsh .msh tetrahedral mesh, relative to the scene file's folder");
   const std::string name = file.string();
   if (name.empty()) file.fail("must name a file");
   if (name.find('\0') != std::string::npos) file.fail("the file name contains a NUL byte");
-  const std::string resolved = scene_relative(ctx, name);
+  const std::string resolved = ctx.relative(name);
   if (const std::string problem = input_file_problem(resolved); !problem.empty())
     file.fail("mesh file '" + resolved + "' " + problem);
   {
@@ -721,7 +714,7 @@ std::vector<OutputSpec> parse_outputs(const Value& v, const Context& ctx, bool s
     spec.path = path.string();
     if (spec.path.empty()) path.fail("must not be empty");
     if (spec.path.find('\0') != std::string::npos) path.fail("the path contains a NUL byte");
-    spec.path = scene_relative(ctx, spec.path);
+    spec.path = ctx.relative(spec.path);
     spec.spot = path.spot();
     if (auto f = m.find("format")) {
       const std::string name = f->string();

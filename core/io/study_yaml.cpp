@@ -27,13 +27,6 @@ std::string flow_text(const YAML::Node& node) {
   return out.c_str();
 }
 
-bool is_number(const std::string& s) {
-  double v = 0;
-  const char* b = s.data() + (!s.empty() && s[0] == '+' ? 1 : 0);
-  const auto r = std::from_chars(b, s.data() + s.size(), v);
-  return !s.empty() && r.ec == std::errc() && r.ptr == s.data() + s.size();
-}
-
 SceneOverride override_at(const Value& v, const std::string& key) {
   SceneOverride o;
   o.key = key;
@@ -49,15 +42,9 @@ std::string scene_key(const Value& where, const std::string& key) {
   return key;
 }
 
-/// A file named in the study, relative to its folder.
-std::string study_relative(const Context& ctx, const std::string& p) {
-  const std::filesystem::path f(p);
-  return (f.is_absolute() ? f : ctx.folder / f).lexically_normal().string();
-}
-
 /// One change a value makes: `scene` names another base scene, any other key is a --set.
 void add_change(StudyLevel& level, const Context& ctx, const std::string& key, const Value& value) {
-  if (key == "scene") level.scene_path = study_relative(ctx, value.string());
+  if (key == "scene") level.scene_path = ctx.relative(value.string());
   else level.overrides.push_back(override_at(value, scene_key(value, key)));
 }
 
@@ -66,12 +53,15 @@ bool is_identifier(const std::string& s) {
   return std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
+/// A plain scalar that reads as a finite number in full (a leading '+' allowed), else nothing.
 std::optional<double> number_of(const YAML::Node& n) {
-  if (!n.IsScalar() || n.Tag() == "!" || !is_number(n.Scalar())) return std::nullopt;
+  if (!n.IsScalar() || n.Tag() == "!" || n.Scalar().empty()) return std::nullopt;
   const std::string& s = n.Scalar();
+  const char* b = s.data() + (s[0] == '+' ? 1 : 0);
   double v = 0;
-  std::from_chars(s.data() + (s[0] == '+' ? 1 : 0), s.data() + s.size(), v);
-  return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+  const auto r = std::from_chars(b, s.data() + s.size(), v);
+  if (r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
 }
 
 /// A scalar's text with the parameter's value put in: `$name` by the value's text, `${...}` by
@@ -289,7 +279,7 @@ StudySpec parse_study(const std::string& text, const std::string& source_name) {
   const Map root = document_root(ctx, doc);
   root.check_known({"scene", "seeds", "parameters", "jobs", "threads", "output", "packings", "plots"});
   const Value scene = root.get("scene", "the base scene file, relative to the study file's folder");
-  s.scene_path = study_relative(ctx, scene.string());
+  s.scene_path = ctx.relative(scene.string());
   if (auto v = root.find("seeds")) {
     s.seeds.clear();
     if (v->node().IsScalar()) {
@@ -332,8 +322,8 @@ StudySpec parse_study(const std::string& text, const std::string& source_name) {
     if (j < 1 || j > static_cast<std::uint64_t>(kMaxStudyJobs)) v->fail("must be 1 .. " + std::to_string(kMaxStudyJobs) + " (runs at once)");
     s.jobs = static_cast<int>(j);
   }
-  if (auto v = root.find("output")) s.output_dir = study_relative(ctx, v->string());
-  else s.output_dir = study_relative(ctx, std::filesystem::path(source_name).filename().replace_extension(".out").string());
+  if (auto v = root.find("output")) s.output_dir = ctx.relative(v->string());
+  else s.output_dir = ctx.relative(std::filesystem::path(source_name).filename().replace_extension(".out").string());
   if (auto v = root.find("packings")) s.keep_packings = v->boolean();
   if (auto v = root.find("plots")) {
     for (const Value& x : v->list()) {

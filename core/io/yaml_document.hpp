@@ -75,11 +75,18 @@ inline std::string shown(const YAML::Node& n) {
 
 struct Context {
   std::string file;
-  std::filesystem::path folder;  // of the scene file: relative mesh paths start here
+  std::filesystem::path folder;  // of the file: its relative paths start here (relative())
   std::vector<std::string>* read_files = nullptr;  // Scene::read_files: the mesh is added
   std::shared_ptr<const TetMesh>* tet_mesh = nullptr;  // Scene::tet_mesh: set by a .msh container
 
   const std::vector<SceneOverride>* overrides = nullptr;  // applied to the document before it is read
+
+  /// A path written in the document: relative to its file's folder, as every path in a file is,
+  /// so that it names the same file from whatever folder frontpack runs.
+  std::string relative(const std::string& name) const {
+    const std::filesystem::path p(name);
+    return (p.is_absolute() ? p : folder / p).lexically_normal().string();
+  }
 
   /// Where the value at `key`, written at `m`, was given: the override that set it, else the file.
   SourceSpot locate(const YAML::Mark& m, const std::string& key) const {
